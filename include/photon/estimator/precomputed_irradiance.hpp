@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Precomputed irradiance (Christensen 1999, "Faster Photon Map Global Illumination"): the global
+// map's irradiance estimate is computed once at a fraction of the photon positions, with the
+// surface normal there. A final-gather ray then costs one nearest-neighbour lookup instead of a
+// k-nearest density estimate.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "../math/octahedral.hpp"
+#include "../photonmap/kdtree.hpp"
+
+namespace photon {
+
+/// One precomputed estimate: where, on which surface orientation, how much irradiance.
+struct IrradianceSample {
+    Vec3<float> position;
+    Rgb<float> irradiance;
+    std::uint16_t normal;  ///< octahedral
+};
+
+/// What the tree keeps beside each position.
+struct IrradiancePayload {
+    Rgb<float> irradiance;
+    std::uint16_t normal;
+};
+
+template <> struct point_traits<IrradianceSample> {
+    using payload_type = IrradiancePayload;
+    [[nodiscard]] static Vec3<float> position(const IrradianceSample& s) noexcept { return s.position; }
+    [[nodiscard]] static IrradiancePayload payload(const IrradianceSample& s) noexcept {
+        return {s.irradiance, s.normal};
+    }
+};
+
+class PrecomputedIrradiance {
+public:
+    PrecomputedIrradiance() = default;
+    explicit PrecomputedIrradiance(std::span<const IrradianceSample> samples) : tree_(samples) {}
+
+    [[nodiscard]] std::size_t size() const noexcept { return tree_.size(); }
+    [[nodiscard]] std::size_t memory_bytes() const noexcept { return tree_.memory_bytes(); }
+
+    /// Irradiance of the nearest sample within `max_radius` whose normal is within about 25
+    /// degrees of `n` (a sample on another surface, such as the far side of a thin wall or a
+    /// perpendicular wall at a corner, does not count); zero if there is none.
+    [[nodiscard]] Rgb<float> lookup(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
+                                    std::vector<Neighbor<float>>& buffer) const {
+        if (tree_.empty()) return Rgb<float>(0.0f);
+        const auto found = tree_.k_nearest(x, 1, max_radius, buffer, [&](std::uint32_t i, float) {
+            return glm::dot(decode_octahedral(tree_.payload(i).normal), n) > 0.9f;
+        });
+        if (found.neighbors.empty()) return Rgb<float>(0.0f);
+        return tree_.payload(found.neighbors[0].index).irradiance;
+    }
+
+private:
+    KdTree<IrradianceSample> tree_;
+};
+
+}  // namespace photon

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Direct light by shadow rays (paper, section 5.1): one ray per point light, n x n stratified
+// rays per sphere light, whose unoccluded estimate is exact and whose partial occlusion gives
+// soft shadows. Phong highlights are added here only, for direct light.
+
+#include <cmath>
+
+#include "../light/light.hpp"
+#include "../material/fresnel.hpp"
+#include "../material/material.hpp"
+#include "../math/sampling.hpp"
+#include "shading_context.hpp"
+
+namespace photon {
+
+/// n for an n x n grid with at least `samples` cells.
+[[nodiscard]] inline unsigned strata_per_axis(unsigned samples) noexcept {
+    const auto n = static_cast<unsigned>(std::ceil(std::sqrt(double(samples)) - 1e-9));
+    return n == 0 ? 1 : n;
+}
+
+/// Radiance reflected towards `wo` at `x` (already offset off the surface) with unit normal `n`
+/// on the shaded side, from every light, by shadow rays.
+template <class SceneT, Scalar S>
+[[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& wo,
+                                     const Material<S>& material, unsigned shadow_samples, ShadingContext& ctx) {
+    Rgb<S> total(S(0));
+    const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
+    const S phong = material.params().phong;
+    for (const Light<S>& light : scene.lights()) {
+        const bool area = light_radius(light) > S(0);
+        const unsigned grid = area ? strata_per_axis(shadow_samples) : 1u;
+        const unsigned count = grid * grid;
+        Rgb<S> sum(S(0));
+        for (unsigned i = 0; i < count; ++i) {
+            const Vec2<S> u = area ? stratified(i, grid, ctx.rng.uniform2<S>()) : Vec2<S>(S(0.5));
+            const auto incident = sample_incident(light, x, u);
+            if (!incident) continue;
+            const S cos_theta = glm::dot(n, incident->direction);
+            if (!(cos_theta > S(0))) continue;
+            ++ctx.rays.shadow;
+            if (scene.occluded(Ray<S>{x, incident->direction, incident->distance})) continue;
+            Rgb<S> f = brdf * cos_theta;
+            if (phong > S(0)) {
+                // POV-Ray's phong term: strength * cos(alpha)^size, alpha between the mirrored
+                // light direction and the viewer; E / pi converts to radiance units.
+                const S c = glm::dot(reflect(-incident->direction, n), wo);
+                if (c > S(0)) f += Rgb<S>(phong * std::pow(c, material.params().phong_exponent) * inv_pi<S>);
+            }
+            sum += f * incident->irradiance;
+        }
+        total += sum / S(count);
+    }
+    return total;
+}
+
+}  // namespace photon

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Pass 2: radiance along a camera ray (paper, Figure 1, "ShadeRayPM"). At a diffuse hit the
+// reflected radiance is split as in section 5: direct light by shadow rays, caustics from the
+// caustic map, indirect light from the global map, read directly or through final gathering
+// (Figure 2). Mirror and glass recurse up to the maximum ray depth.
+
+#include <optional>
+
+#include "../estimator/precomputed_irradiance.hpp"
+#include "../geometry/offset.hpp"
+#include "../material/scatter.hpp"
+#include "../math/frame.hpp"
+#include "boundary_probe.hpp"
+#include "direct_lighting.hpp"
+#include "render_settings.hpp"
+
+namespace photon {
+
+/// The photon maps pass 2 reads, and the irradiance precomputed from the global one; any may
+/// be absent.
+struct PhotonMaps {
+    std::optional<PhotonMap> global, caustic;
+    std::optional<PrecomputedIrradiance> irradiance;
+};
+
+template <class SceneT> class RadianceIntegrator {
+public:
+    using S = typename SceneT::scalar_type;
+
+    RadianceIntegrator(const SceneT& scene, const PhotonMaps& maps, const RenderSettings& settings) noexcept
+        : scene_(scene), maps_(maps), settings_(settings) {}
+
+    /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray.
+    [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
+        const auto surface = scene_.intersect(ray);
+        if (!surface) return Rgb<S>(S(0));
+        const Material<S>& material = *surface->material;
+        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Vec3<S>& x = surface->hit.point;
+        const S error = intersection_error(x, ray.origin);
+        Rgb<S> result(S(0));
+        if (material.has_diffuse()) {
+            const Vec3<S> above = offset_origin(x, f.normal, error);
+            const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
+            switch (settings_.mode) {
+            case RenderMode::rt:
+                result += direct_lighting(scene_, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
+                break;
+            case RenderMode::pm:
+                result += direct_lighting(scene_, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
+                result += brdf * map_irradiance(maps_.caustic, settings_.caustic_estimate, above, f.normal, ctx);
+                result += brdf * (settings_.final_gather_rays > 0
+                                      ? final_gather(above, f.normal, ctx)
+                                      : map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx));
+                break;
+            case RenderMode::pm_direct:
+                result += brdf * (map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx) +
+                                  map_irradiance(maps_.caustic, settings_.caustic_estimate, above, f.normal, ctx));
+                break;
+            case RenderMode::reference: break;  // rendered by PathTracer
+            }
+        }
+        if (depth < settings_.max_ray_depth && material.is_specular())
+            result += specular(ray, *surface, f, error, depth, ctx, false);
+        return result;
+    }
+
+private:
+    /// Mirror and refraction continuations, each weighted by its reflectance at this hit.
+    /// `gathering`: the rays belong to a final gather and end in the global map.
+    [[nodiscard]] Rgb<S> specular(const Ray<S>& ray, const SurfaceHit<S>& surface, const Facing<S>& f, S error,
+                                  unsigned depth, ShadingContext& ctx, bool gathering) const {
+        const Material<S>& material = *surface.material;
+        const Scattering<S> s = material.scattering(f.cos_i, f.entering);
+        const Vec3<S>& x = surface.hit.point;
+        Rgb<S> result(S(0));
+        Rgb<S> reflected_weight = s.specular;
+        if (!is_black(s.transmission)) {
+            if (const auto refracted = refract(ray.direction, f.normal, relative_eta(material, f.entering))) {
+                if (gathering) ++ctx.rays.gather; else ++ctx.rays.refraction;
+                const Ray<S> next{offset_origin(x, -f.normal, error), *refracted};
+                result += s.transmission * trace(next, depth + 1, ctx, gathering);
+            } else {
+                reflected_weight += s.transmission;  // total internal reflection
+            }
+        }
+        if (!is_black(reflected_weight)) {
+            if (gathering) ++ctx.rays.gather; else ++ctx.rays.reflection;
+            const Ray<S> next{offset_origin(x, f.normal, error), reflect(ray.direction, f.normal)};
+            result += reflected_weight * trace(next, depth + 1, ctx, gathering);
+        }
+        return result;
+    }
+
+    [[nodiscard]] Rgb<S> trace(const Ray<S>& ray, unsigned depth, ShadingContext& ctx, bool gathering) const {
+        return gathering ? gathered_radiance(ray, depth, ctx) : radiance(ray, depth, ctx);
+    }
+
+    /// Irradiance from one map at `x`, with the thin-wall probes if the settings ask for them.
+    [[nodiscard]] Rgb<S> map_irradiance(const std::optional<PhotonMap>& map, const EstimateSettings& es,
+                                        const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
+        if (!map || map->empty()) return Rgb<S>(S(0));
+        ++ctx.estimates;
+        if (es.boundary_probes == 0) return estimate_irradiance(*map, x, n, es, ctx.scratch);
+        const VisibleDisc disc = probe_visible_disc(scene_, x, n, es.max_radius, es.boundary_probes, ctx);
+        return estimate_irradiance(*map, x, n, es, ctx.scratch, &disc);
+    }
+
+    /// Indirect irradiance at x by final gathering: cosine-distributed, stratified rays whose
+    /// hits are read from the global map (which then holds every diffuse hit). E = pi * mean L.
+    [[nodiscard]] Rgb<S> final_gather(const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
+        const unsigned grid = strata_per_axis(settings_.final_gather_rays);
+        const unsigned count = grid * grid;
+        const Frame<S> frame = Frame<S>::from_normal(n);
+        Rgb<S> sum(S(0));
+        for (unsigned i = 0; i < count; ++i) {
+            const Vec3<S> dir = frame.to_world(cosine_hemisphere(stratified(i, grid, ctx.rng.uniform2<S>())));
+            ++ctx.rays.gather;
+            sum += gathered_radiance(Ray<S>{x, dir}, 1, ctx);
+        }
+        return sum * (pi<S> / S(count));
+    }
+
+    /// Radiance along a gather ray: the global map's estimate at its first diffuse hit, through
+    /// mirrors and glass.
+    [[nodiscard]] Rgb<S> gathered_radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
+        const auto surface = scene_.intersect(ray);
+        if (!surface) return Rgb<S>(S(0));
+        const Material<S>& material = *surface->material;
+        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const S error = intersection_error(surface->hit.point, ray.origin);
+        Rgb<S> result(S(0));
+        if (material.has_diffuse()) {
+            const Vec3<S> above = offset_origin(surface->hit.point, f.normal, error);
+            const Rgb<S> irradiance =
+                maps_.irradiance
+                    ? Rgb<S>(maps_.irradiance->lookup(Vec3<float>(above), Vec3<float>(f.normal),
+                                                      settings_.global_estimate.max_radius, ctx.nearest))
+                    : map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx);
+            result += material.diffuse() * inv_pi<S> * irradiance;
+        }
+        if (depth < settings_.max_ray_depth && material.is_specular())
+            result += specular(ray, *surface, f, error, depth, ctx, true);
+        return result;
+    }
+
+    const SceneT& scene_;
+    const PhotonMaps& maps_;
+    const RenderSettings& settings_;
+};
+
+}  // namespace photon

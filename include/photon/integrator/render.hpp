@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The two passes composed. Each step is a function of its own (photon tracing, map building,
+// image rendering) so that programs can reorder or replace them; render() is the usual order.
+
+#include <chrono>
+#include <mutex>
+
+#include "../film/film.hpp"
+#include "../parallel/parallel_for.hpp"
+#include "../scene/camera.hpp"
+#include "../tracing/photon_tracer.hpp"
+#include "path_tracer.hpp"
+#include "radiance.hpp"
+
+namespace photon {
+
+struct RenderResult {
+    Film film;
+    RenderStats stats;
+};
+
+/// Which paths the global map must hold for `settings`: direct and caustic photons only when
+/// something reads them from it (final gathering, pm-direct, or no caustic map to take caustics).
+[[nodiscard]] inline PathKinds global_map_contents(const RenderSettings& s, bool has_caustic_map) noexcept {
+    const bool gathering = s.mode == RenderMode::pm && s.final_gather_rays > 0;
+    const bool all_light = s.mode == RenderMode::pm_direct;
+    return {.direct = gathering || all_light,
+            .caustic = gathering || !has_caustic_map,
+            .indirect = true};
+}
+
+[[nodiscard]] inline bool uses_precomputed_irradiance(const RenderSettings& s) noexcept {
+    return s.mode == RenderMode::pm && s.final_gather_rays > 0 && s.irradiance_stride > 0;
+}
+
+/// Irradiance at every `settings.irradiance_stride`-th photon of `photons` (in trace order, with
+/// their surface normals), estimated from `global` as a camera ray would, thin-wall probes
+/// included. Deterministic: sample i is computed from photon i * stride alone.
+template <class SceneT>
+[[nodiscard]] PrecomputedIrradiance precompute_irradiance(const SceneT& scene, const PhotonMap& global,
+                                                          std::span<const Photon> photons,
+                                                          std::span<const std::uint16_t> normals,
+                                                          const RenderSettings& settings) {
+    using S = typename SceneT::scalar_type;
+    const std::size_t stride = settings.irradiance_stride;
+    std::vector<IrradianceSample> samples((photons.size() + stride - 1) / stride);
+    const Vec3<S> scene_scale(scene.bounds().is_finite() ? scene.bounds().magnitude() : S(0));
+    const EstimateSettings& es = settings.global_estimate;
+    std::mutex report;
+    std::size_t done = 0;
+    parallel_for(samples.size(), 4096, settings.threads, [&](std::size_t b, std::size_t e) {
+        if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
+        ShadingContext ctx;
+        for (std::size_t i = b; i < e; ++i) {
+            const Photon& p = photons[i * stride];
+            const Vec3<S> n(decode_octahedral(normals[i * stride]));
+            const Vec3<S> x = offset_origin(Vec3<S>(p.position), n, intersection_error(Vec3<S>(p.position), scene_scale));
+            Rgb<S> e_x;
+            if (es.boundary_probes > 0) {
+                const VisibleDisc disc = probe_visible_disc(scene, x, n, es.max_radius, es.boundary_probes, ctx);
+                e_x = estimate_irradiance(global, x, n, es, ctx.scratch, &disc);
+            } else {
+                e_x = estimate_irradiance(global, x, n, es, ctx.scratch);
+            }
+            samples[i] = {p.position, Rgb<float>(e_x), normals[i * stride]};
+        }
+        if (settings.progress) {
+            const std::lock_guard lock(report);
+            done += e - b;
+            settings.progress(RenderPhase::precompute, double(done) / double(samples.size()));
+        }
+    });
+    return PrecomputedIrradiance(samples);
+}
+
+/// Pass 1: traces and balances the photon maps the mode needs. `rt` needs none; the caustic
+/// pass runs only when the scene can form caustics (scene_has_caustics).
+template <class SceneT>
+[[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const RenderSettings& settings, RenderStats& stats) {
+    PhotonMaps maps;
+    if (settings.mode == RenderMode::rt || settings.mode == RenderMode::reference) return maps;
+    auto settle = [](std::optional<PhotonMap>& map, TracedPhotons&& traced, PhotonMapStats& st) {
+        st.emitted = traced.emitted;
+        st.rays = traced.rays;
+        st.trace_seconds = traced.seconds;
+        const auto start = std::chrono::steady_clock::now();
+        map.emplace(std::span<const Photon>(traced.photons));
+        st.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        st.stored = map->size();
+        st.memory_bytes = map->memory_bytes();
+    };
+    auto report = [&](RenderPhase phase) -> std::function<void(double)> {
+        if (!settings.progress) return {};
+        return [&settings, phase](double f) { settings.progress(phase, f); };
+    };
+    auto cancelled = [&] { return settings.cancel && settings.cancel->load(std::memory_order_relaxed); };
+    PhotonTracingSettings pass{.photons = settings.caustic_photons,
+                               .max_depth = settings.max_photon_depth,
+                               .sampler = settings.emission,
+                               .seed = settings.seed,
+                               .threads = settings.threads,
+                               .progress = report(RenderPhase::caustic_photons),
+                               .cancel = settings.cancel};
+    const bool caustics = settings.caustic_photons > 0 && scene_has_caustics(scene);
+    if (caustics) settle(maps.caustic, trace_caustic_photons(scene, pass), stats.caustic);
+    if (settings.global_photons > 0 && !cancelled()) {
+        pass.photons = settings.global_photons;
+        pass.progress = report(RenderPhase::global_photons);
+        pass.store = global_map_contents(settings, caustics);
+        pass.keep_normals = uses_precomputed_irradiance(settings);
+        TracedPhotons traced = trace_global_photons(scene, pass);
+        std::vector<Photon> photons = traced.photons;  // the precomputation needs them in trace order
+        std::vector<std::uint16_t> normals = std::move(traced.normals);
+        settle(maps.global, std::move(traced), stats.global);
+        if (pass.keep_normals && !cancelled()) {
+            const auto start = std::chrono::steady_clock::now();
+            maps.irradiance = precompute_irradiance(scene, *maps.global, photons, normals, settings);
+            stats.precompute_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        }
+    }
+    return maps;
+}
+
+/// Pass 2: one radiance estimate per jittered sample, averaged per pixel. Pixel p draws from
+/// random stream p, so the film does not depend on the thread count.
+template <class SceneT>
+[[nodiscard]] Film render_image(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+                                const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats) {
+    using S = typename SceneT::scalar_type;
+    const auto start = std::chrono::steady_clock::now();
+    Film film(settings.width, settings.height);
+    const RadianceIntegrator<SceneT> integrator(scene, maps, settings);
+    const PathTracer<SceneT> path_tracer(scene, settings);
+    const bool reference = settings.mode == RenderMode::reference;
+    const unsigned grid = settings.samples_per_pixel == 1 ? 1u : strata_per_axis(settings.samples_per_pixel);
+    const unsigned spp = grid * grid;
+    std::mutex merge;
+    std::size_t rows_done = 0;
+    bool cancelled = false;
+    parallel_for(settings.height, 1, settings.threads, [&](std::size_t y0, std::size_t y1) {
+        ShadingContext ctx;
+        for (std::size_t y = y0; y < y1; ++y) {
+            if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
+                const std::lock_guard lock(merge);
+                cancelled = true;
+                return;
+            }
+            for (unsigned x = 0; x < settings.width; ++x) {
+                const std::uint64_t pixel = std::uint64_t(y) * settings.width + x;
+                ctx.rng = Pcg32(settings.seed ^ 0x706978656c73ULL, pixel);
+                Rgb<S> sum(S(0));
+                for (unsigned s = 0; s < spp; ++s) {
+                    const Vec2<S> jitter = spp == 1 ? Vec2<S>(S(0.5)) : stratified(s, grid, ctx.rng.uniform2<S>());
+                    const S u = (S(x) + jitter.x) / S(settings.width);
+                    const S v = (S(y) + jitter.y) / S(settings.height);
+                    ++ctx.rays.camera;
+                    sum += reference ? path_tracer.radiance(camera.ray(u, v), ctx)
+                                     : integrator.radiance(camera.ray(u, v), 1, ctx);
+                }
+                film.at(x, unsigned(y)) = Rgb<float>(sum / S(spp));
+            }
+            if (settings.progress) {
+                const std::lock_guard lock(merge);
+                settings.progress(RenderPhase::image, double(++rows_done) / double(settings.height));
+            }
+        }
+        const std::lock_guard lock(merge);
+        stats.rays += ctx.rays;
+        stats.estimates += ctx.estimates;
+    });
+    stats.partial = cancelled;
+    stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return film;
+}
+
+/// Both passes: photon maps for the mode, then the image, with statistics.
+template <class SceneT>
+[[nodiscard]] RenderResult render(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+                                  const RenderSettings& settings) {
+    validate(settings);
+    const auto start = std::chrono::steady_clock::now();
+    RenderResult result;
+    RenderStats& stats = result.stats;
+    stats.width = settings.width;
+    stats.height = settings.height;
+    stats.threads = resolve_threads(settings.threads);
+    stats.mode = to_string(settings.mode);
+    const PhotonMaps maps = build_photon_maps(scene, settings, stats);
+    if (settings.cancel && settings.cancel->load()) {
+        result.film = Film(settings.width, settings.height);  // nothing rendered yet
+        stats.partial = true;
+    } else {
+        result.film = render_image(scene, camera, maps, settings, stats);
+    }
+    stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace photon

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "../estimator/density_estimate.hpp"
+#include "../light/light.hpp"
+
+namespace photon {
+
+/// The paper's three ways to render.
+enum class RenderMode {
+    rt,         ///< Whitted ray tracing with soft shadows, no indirect light (the paper's Table 1)
+    pm,         ///< two-pass photon mapping: shadow rays + caustic map + global map (Table 2)
+    pm_direct,  ///< all light read from the photon maps at the first diffuse hit (Figure 3)
+    reference,  ///< unbiased path tracing, to measure the others' error (slow; many samples)
+};
+
+[[nodiscard]] inline const char* to_string(RenderMode m) noexcept {
+    switch (m) {
+    case RenderMode::rt: return "rt";
+    case RenderMode::pm: return "pm";
+    case RenderMode::pm_direct: return "pm-direct";
+    case RenderMode::reference: return "reference";
+    }
+    return "?";
+}
+
+/// The stages of a render, as progress reports name them.
+enum class RenderPhase { caustic_photons, global_photons, precompute, image };
+
+[[nodiscard]] inline const char* to_string(RenderPhase p) noexcept {
+    switch (p) {
+    case RenderPhase::caustic_photons: return "caustic photons";
+    case RenderPhase::global_photons: return "global photons";
+    case RenderPhase::precompute: return "precomputing irradiance";
+    case RenderPhase::image: return "rendering";
+    }
+    return "?";
+}
+
+/// Everything a render needs besides the scene and the camera. Defaults give a clean 800x600
+/// Cornell box in well under a minute on two cores.
+struct RenderSettings {
+    RenderMode mode = RenderMode::pm;
+    unsigned width = 800, height = 600;
+    unsigned samples_per_pixel = 4;  ///< anti-aliasing; rounded up to a square n x n jittered grid
+    unsigned max_ray_depth = 4;      ///< primary ray = 1; a mirror seen in a mirror is depth 3
+    unsigned shadow_samples = 16;    ///< per area light and shading point; rounded up to n x n strata
+
+    std::size_t global_photons = 200'000;   ///< emitted for the global map
+    std::size_t caustic_photons = 200'000;  ///< emitted towards caustic targets (skipped if none)
+    unsigned max_photon_depth = 10;
+    EmissionSampler emission = EmissionSampler::direct;
+
+    EstimateSettings global_estimate{.k = 100, .max_radius = 0.25f};
+    EstimateSettings caustic_estimate{.k = 60, .max_radius = 0.05f, .kernel = {Filter::cone, 1.1f}};
+    /// pm: gather rays per camera sample at a diffuse hit (0: read the global map directly).
+    unsigned final_gather_rays = 16;
+    /// Final gathering reads irradiance precomputed at every `irradiance_stride`-th global photon
+    /// (Christensen 1999) instead of running a density estimate per gather ray; 0 turns it off.
+    unsigned irradiance_stride = 4;
+
+    std::uint64_t seed = 1;
+    unsigned threads = 0;  ///< 0: all hardware threads; the image does not depend on it
+
+    /// Called from worker threads (serialised) with the phase and the fraction of it done.
+    std::function<void(RenderPhase, double)> progress{};
+    /// When set to true during a render, the current pass stops soon, later passes are skipped,
+    /// and the result is marked partial (pixels not rendered are black).
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+/// Throws std::invalid_argument naming the first setting out of range.
+inline void validate(const RenderSettings& s) {
+    auto fail = [](const std::string& what) { throw std::invalid_argument("render settings: " + what); };
+    if (s.width == 0 || s.height == 0) fail("width and height must be at least 1");
+    if (s.samples_per_pixel == 0) fail("samples per pixel must be at least 1");
+    if (s.max_ray_depth == 0) fail("max ray depth must be at least 1");
+    if (s.shadow_samples == 0) fail("shadow samples must be at least 1");
+    if (s.max_photon_depth == 0) fail("max photon depth must be at least 1");
+    for (const EstimateSettings* e : {&s.global_estimate, &s.caustic_estimate}) {
+        if (e->k == 0) fail("photons per estimate must be at least 1");
+        if (!(e->max_radius > 0.0f) || !std::isfinite(e->max_radius)) fail("estimate radius must be positive");
+        if (!(e->flatten >= 1.0f) || !std::isfinite(e->flatten)) fail("flatten must be >= 1");
+        if (e->kernel.filter == Filter::cone && !(e->kernel.cone_k >= 1.0f)) fail("cone filter k must be >= 1");
+    }
+}
+
+}  // namespace photon

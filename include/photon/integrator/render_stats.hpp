@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// What a render did: the columns of the paper's Tables 1 and 2 and more.
+
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+namespace photon {
+
+/// Rays traced in pass 2, by purpose.
+struct RayCounts {
+    std::uint64_t camera = 0, shadow = 0, reflection = 0, refraction = 0, gather = 0, probe = 0;
+
+    [[nodiscard]] std::uint64_t total() const noexcept { return camera + shadow + reflection + refraction + gather + probe; }
+    RayCounts& operator+=(const RayCounts& o) noexcept {
+        camera += o.camera, shadow += o.shadow, reflection += o.reflection;
+        refraction += o.refraction, gather += o.gather, probe += o.probe;
+        return *this;
+    }
+};
+
+struct PhotonMapStats {
+    std::uint64_t emitted = 0;  ///< photons shot
+    std::uint64_t stored = 0;   ///< photons in the map
+    std::uint64_t rays = 0;     ///< photon rays traced
+    std::uint64_t memory_bytes = 0;
+    double trace_seconds = 0, build_seconds = 0;
+};
+
+struct RenderStats {
+    unsigned width = 0, height = 0, threads = 0;
+    std::string mode;
+    PhotonMapStats global, caustic;
+    RayCounts rays;
+    std::uint64_t estimates = 0;  ///< photon map density estimates
+    double precompute_seconds = 0, render_seconds = 0, total_seconds = 0;
+    bool partial = false;  ///< cancelled before every pixel was rendered
+};
+
+/// The statistics as an aligned plain-text table.
+[[nodiscard]] inline std::string format_stats(const RenderStats& s) {
+    std::string out;
+    char line[160];
+    auto row = [&](const char* name, const char* fmt, auto... v) {
+        std::snprintf(line, sizeof line, "  %-28s", name);
+        out += line;
+        std::snprintf(line, sizeof line, fmt, v...);
+        out += line;
+        out += '\n';
+    };
+    auto mib = [](std::uint64_t b) { return double(b) / (1024.0 * 1024.0); };
+    row("image", "%u x %u, mode %s, %u threads%s", s.width, s.height, s.mode.c_str(), s.threads,
+        s.partial ? " (PARTIAL)" : "");
+    row("global map", "%llu emitted, %llu stored, %.1f MiB, trace %.2f s, build %.2f s",
+        (unsigned long long)s.global.emitted, (unsigned long long)s.global.stored, mib(s.global.memory_bytes),
+        s.global.trace_seconds, s.global.build_seconds);
+    row("caustic map", "%llu emitted, %llu stored, %.1f MiB, trace %.2f s, build %.2f s",
+        (unsigned long long)s.caustic.emitted, (unsigned long long)s.caustic.stored, mib(s.caustic.memory_bytes),
+        s.caustic.trace_seconds, s.caustic.build_seconds);
+    row("photon rays", "%llu", (unsigned long long)(s.global.rays + s.caustic.rays));
+    row("rays (pass 2)", "%llu total: camera %llu, shadow %llu, reflection %llu,", (unsigned long long)s.rays.total(),
+        (unsigned long long)s.rays.camera, (unsigned long long)s.rays.shadow, (unsigned long long)s.rays.reflection);
+    row("", "refraction %llu, gather %llu, probe %llu", (unsigned long long)s.rays.refraction,
+        (unsigned long long)s.rays.gather, (unsigned long long)s.rays.probe);
+    row("density estimates", "%llu", (unsigned long long)s.estimates);
+    row("time", "precompute %.2f s, render %.2f s, total %.2f s", s.precompute_seconds, s.render_seconds,
+        s.total_seconds);
+    return out;
+}
+
+}  // namespace photon

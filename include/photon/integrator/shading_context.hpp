@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "../estimator/density_estimate.hpp"
+#include "../math/rng.hpp"
+#include "render_stats.hpp"
+
+namespace photon {
+
+/// Mutable state of one worker while it shades: the pixel's random stream, scratch buffers and
+/// counters. Never shared between threads.
+struct ShadingContext {
+    Pcg32 rng{0, 0};
+    EstimateScratch scratch{};
+    std::vector<Neighbor<float>> nearest{};  ///< for precomputed-irradiance lookups
+    RayCounts rays{};
+    std::uint64_t estimates = 0;
+};
+
+}  // namespace photon

@@ -1,0 +1,124 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Lights as the two passes see them: photon emission (pass 1) and incident light at a shading
+// point for shadow rays (pass 2). Point and spherical lights share both: a point light is the
+// limit of a sphere light of radius 0.
+
+#include <cmath>
+#include <optional>
+#include <variant>
+
+#include "../geometry/ray.hpp"
+#include "../math/frame.hpp"
+#include "../math/rng.hpp"
+#include "../math/sampling.hpp"
+#include "point_light.hpp"
+#include "sphere_light.hpp"
+
+namespace photon {
+
+template <Scalar S> using Light = std::variant<PointLight<S>, SphereLight<S>>;
+
+/// How photon directions are drawn: `rejection` as the paper (points in a cube kept when inside
+/// the unit ball, and inside the cone if any), `direct` by inverting the distribution. Both are
+/// uniform over the emitting directions; `direct` never loops.
+enum class EmissionSampler { direct, rejection };
+
+template <Scalar S> [[nodiscard]] Vec3<S> light_center(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) {
+        if constexpr (requires { l.center; }) return l.center; else return l.position;
+    }, light);
+}
+template <Scalar S> [[nodiscard]] S light_radius(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) {
+        if constexpr (requires { l.radius; }) return l.radius; else return S(0);
+    }, light);
+}
+template <Scalar S> [[nodiscard]] const Rgb<S>& light_power(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) -> const Rgb<S>& { return l.power; }, light);
+}
+template <Scalar S> [[nodiscard]] const std::optional<Cone<S>>& light_cone(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) -> const std::optional<Cone<S>>& { return l.cone; }, light);
+}
+template <Scalar S> void validate(const Light<S>& light) {
+    std::visit([](const auto& l) { l.validate(); }, light);
+}
+
+/// Solid angle the light emits into: 4 pi, or its cone's.
+template <Scalar S> [[nodiscard]] S emission_solid_angle(const Light<S>& light) noexcept {
+    const auto& cone = light_cone(light);
+    return cone ? cone->solid_angle() : S(4) * pi<S>;
+}
+/// Radiant intensity in W/sr per channel, the same in every direction it emits into.
+template <Scalar S> [[nodiscard]] Rgb<S> radiant_intensity(const Light<S>& light) noexcept {
+    return light_power(light) / emission_solid_angle(light);
+}
+
+/// Unit emission direction, uniform over the light's emitting directions.
+template <Scalar S>
+[[nodiscard]] Vec3<S> sample_emission_direction(const Light<S>& light, EmissionSampler sampler, Pcg32& rng) noexcept {
+    const auto& cone = light_cone(light);
+    if (sampler == EmissionSampler::direct) {
+        const Vec2<S> u = rng.uniform2<S>();
+        return cone ? cone->sample(u) : uniform_sphere(u);
+    }
+    for (;;) {  // expected 4 pi / solid angle draws with a cone
+        const Vec3<S> d = rejection_sphere<S>(rng);
+        if (!cone || cone->contains(d)) return d;
+    }
+}
+
+/// Origin of a photon leaving the light along unit `direction`. For a sphere light, rays of one
+/// direction leave a Lambertian sphere uniformly over its silhouette disc, so the origin is a
+/// uniform point of that disc lifted onto the sphere's near side.
+template <Scalar S>
+[[nodiscard]] Vec3<S> sample_emission_origin(const Light<S>& light, const Vec3<S>& direction, Vec2<S> u) noexcept {
+    const S radius = light_radius(light);
+    const Vec3<S> center = light_center(light);
+    if (radius == S(0)) return center;
+    const Vec2<S> disc = concentric_disc(u);
+    const Frame<S> frame = Frame<S>::from_normal(direction);
+    const S lift = std::sqrt(std::max(S(0), S(1) - disc.x * disc.x - disc.y * disc.y));
+    return center + radius * frame.to_world({disc.x, disc.y, lift});
+}
+
+/// Light arriving at a shading point from one sample of a light.
+template <Scalar S> struct IncidentLight {
+    Vec3<S> direction;  ///< unit, from the shading point towards the light
+    S distance;         ///< to the sampled point of the light (shadow rays stop short of it)
+    Rgb<S> irradiance;  ///< irradiance on a surface facing the light; times cos(theta) for others
+};
+
+/// One sample of the light seen from `x`, with u uniform in [0,1)^2 (stratify it for soft
+/// shadows). Nothing when `x` is outside the cone or inside the light. Sphere lights are sampled
+/// uniformly in the solid angle they subtend, so the estimate is exact for an unoccluded light.
+template <Scalar S>
+[[nodiscard]] std::optional<IncidentLight<S>> sample_incident(const Light<S>& light, const Vec3<S>& x,
+                                                              Vec2<S> u) noexcept {
+    const Vec3<S> to_center = light_center(light) - x;
+    const S d2 = glm::dot(to_center, to_center);
+    const S radius = light_radius(light);
+    const auto& cone = light_cone(light);
+    if (!(d2 > radius * radius)) return std::nullopt;
+    const S dist = std::sqrt(d2);
+    const Rgb<S> intensity = radiant_intensity(light);
+    if (radius == S(0)) {
+        const Vec3<S> dir = to_center / dist;
+        if (cone && !cone->contains(-dir)) return std::nullopt;
+        return IncidentLight<S>{dir, dist, intensity / d2};
+    }
+    // Cone of directions subtended by the sphere; 1 - cos computed as sin^2 / (1 + cos).
+    const S sin2_max = radius * radius / d2;
+    const S cos_max = std::sqrt(std::max(S(0), S(1) - sin2_max));
+    const S one_minus_cos = sin2_max / (S(1) + cos_max);
+    const Vec3<S> local{uniform_cone(u, cos_max)};
+    const Vec3<S> dir = Frame<S>::from_normal(to_center / dist).to_world(local);
+    if (cone && !cone->contains(-dir)) return std::nullopt;
+    const S b = glm::dot(dir, to_center);
+    const Vec3<S> off = to_center - b * dir;
+    const S t = b - std::sqrt(std::max(S(0), radius * radius - glm::dot(off, off)));
+    const Rgb<S> radiance = intensity / (pi<S> * radius * radius);
+    return IncidentLight<S>{dir, t, radiance * (S(2) * pi<S> * one_minus_cos)};
+}
+
+}  // namespace photon

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include "cone.hpp"
+
+namespace photon {
+
+/// Isotropic point light of total radiant power `power` (watts per RGB channel), optionally
+/// emitting only into a cone. Radiant intensity I = power / solid angle emitted into; irradiance
+/// at distance d is I cos(theta) / d^2 (inverse-square falloff).
+template <Scalar S> struct PointLight {
+    Vec3<S> position{};
+    Rgb<S> power{S(0)};
+    std::optional<Cone<S>> cone{};
+
+    /// Throws std::invalid_argument on a non-finite position or a negative or non-finite power.
+    void validate() const {
+        if (!is_finite(position)) throw std::invalid_argument("light: position must be finite");
+        if (!is_finite(power) || min_component(power) < S(0))
+            throw std::invalid_argument("light: power must be finite and >= 0 in every channel");
+    }
+};
+
+}  // namespace photon

@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The paper's surface model: a Lambertian diffuse part, a perfect mirror part and a perfect
+// transmission part, each with its own reflectance per RGB channel, plus a Phong highlight that
+// only direct light sees. Glass splits its transmission into reflection and refraction by the
+// Fresnel equations, with total internal reflection.
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "../math/vec.hpp"
+#include "fresnel.hpp"
+
+namespace photon {
+
+/// Everything a Material is made of; see Material for the meaning and the checks.
+template <Scalar S> struct MaterialParams {
+    Rgb<S> diffuse{S(0)};       ///< Lambertian albedo rho_d (BRDF rho_d / pi)
+    Rgb<S> specular{S(0)};      ///< mirror reflectance rho_s
+    Rgb<S> transmission{S(0)};  ///< transmittance rho_t through a refracting interface
+    S ior = S(1);               ///< index of refraction inside the surface (outside is 1)
+    bool fresnel = false;       ///< split transmission into reflection F and refraction 1 - F
+    S phong = S(0);             ///< Phong highlight strength (direct light only, not energy conserving)
+    S phong_exponent = S(40);   ///< Phong exponent (POV-Ray's phong_size)
+};
+
+/// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
+/// and the ray tracer use, each <= 1 in sum per channel.
+template <Scalar S> struct Scattering {
+    Rgb<S> diffuse, specular, transmission;
+};
+
+/// A validated surface material. Invariants (checked at construction, std::invalid_argument with
+/// the offending values otherwise): every reflectance is finite and >= 0; diffuse + specular +
+/// transmission <= 1 in every channel (energy conservation); ior > 0 and finite; phong >= 0.
+template <Scalar S> class Material {
+public:
+    explicit Material(const MaterialParams<S>& params);
+
+    /// Lambertian surface of the given albedo.
+    [[nodiscard]] static Material lambertian(const Rgb<S>& albedo) { return Material({.diffuse = albedo}); }
+    /// Perfect mirror.
+    [[nodiscard]] static Material mirror(const Rgb<S>& reflectance = Rgb<S>(S(1))) {
+        return Material({.specular = reflectance});
+    }
+    /// Clear dielectric: Fresnel reflection, refraction with the rest, total internal reflection.
+    [[nodiscard]] static Material glass(S ior, const Rgb<S>& transmission = Rgb<S>(S(1))) {
+        return Material({.transmission = transmission, .ior = ior, .fresnel = true});
+    }
+
+    [[nodiscard]] const MaterialParams<S>& params() const noexcept { return params_; }
+    [[nodiscard]] const Rgb<S>& diffuse() const noexcept { return params_.diffuse; }
+    [[nodiscard]] S ior() const noexcept { return params_.ior; }
+    [[nodiscard]] bool has_diffuse() const noexcept { return !is_black(params_.diffuse); }
+    /// True when the surface can reflect or refract specularly (it can form caustics).
+    [[nodiscard]] bool is_specular() const noexcept {
+        return !is_black(params_.specular) || !is_black(params_.transmission);
+    }
+
+    /// Reflectances at a hit where the incoming unit direction makes cos_i (> 0) with the normal
+    /// facing it, entering the surface when `entering` (else leaving it).
+    [[nodiscard]] Scattering<S> scattering(S cos_i, bool entering) const noexcept {
+        Scattering<S> s{params_.diffuse, params_.specular, params_.transmission};
+        if (params_.fresnel && !is_black(params_.transmission)) {
+            const S f = entering ? fresnel_dielectric(cos_i, S(1), params_.ior)
+                                 : fresnel_dielectric(cos_i, params_.ior, S(1));
+            s.specular += params_.transmission * f;
+            s.transmission = params_.transmission * (S(1) - f);
+        }
+        return s;
+    }
+
+private:
+    MaterialParams<S> params_;
+};
+
+template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(p) {
+    auto fail = [](const std::string& what) { throw std::invalid_argument("material: " + what); };
+    auto check_rgb = [&](const Rgb<S>& c, const char* name) {
+        if (!is_finite(c) || min_component(c) < S(0)) {
+            std::ostringstream os;
+            os << name << " reflectance must be finite and >= 0, got <" << c.x << ", " << c.y << ", " << c.z << ">";
+            fail(os.str());
+        }
+    };
+    check_rgb(p.diffuse, "diffuse");
+    check_rgb(p.specular, "specular");
+    check_rgb(p.transmission, "transmission");
+    const Rgb<S> sum = p.diffuse + p.specular + p.transmission;
+    constexpr const char* channel[] = {"red", "green", "blue"};
+    for (int c = 0; c < 3; ++c) {
+        // A little slack for values like 0.7 + 0.3 that round above 1.
+        if (sum[c] > S(1) + S(1e-6)) {
+            std::ostringstream os;
+            os << "diffuse + specular + transmission = " << sum[c] << " > 1 in the " << channel[c]
+               << " channel (diffuse " << p.diffuse[c] << ", specular " << p.specular[c] << ", transmission "
+               << p.transmission[c] << "); a surface cannot reflect more light than it receives";
+            fail(os.str());
+        }
+    }
+    if (!(p.ior > S(0)) || !std::isfinite(p.ior)) {
+        std::ostringstream os;
+        os << "ior must be positive and finite, got " << p.ior;
+        fail(os.str());
+    }
+    if (!(p.phong >= S(0)) || !std::isfinite(p.phong) || !(p.phong_exponent > S(0)) || !std::isfinite(p.phong_exponent))
+        fail("phong must be >= 0 and phong_exponent > 0, both finite");
+}
+
+}  // namespace photon

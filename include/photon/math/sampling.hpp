@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Warping uniform numbers in [0,1)^2 into directions and points. Every sampler states its pdf.
+
+#include <algorithm>
+#include <cmath>
+
+#include "frame.hpp"
+#include "rng.hpp"
+#include "vec.hpp"
+
+namespace photon {
+
+/// Uniform direction on the unit sphere by inversion (z uniform in [-1,1], phi uniform).
+/// pdf = 1 / (4 pi) per steradian.
+template <Scalar S> [[nodiscard]] Vec3<S> uniform_sphere(Vec2<S> u) noexcept {
+    const S z = S(1) - S(2) * u.x;
+    const S r = std::sqrt(std::max(S(0), S(1) - z * z));
+    const S phi = S(2) * pi<S> * u.y;
+    return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+/// Uniform direction on the unit sphere by rejection, as in the paper (section 3.1): draw points
+/// in the cube [-1,1]^3 until one falls inside the unit ball, then normalise. Accepts with
+/// probability pi/6; the expected number of draws is 6/pi = 1.91.
+template <Scalar S> [[nodiscard]] Vec3<S> rejection_sphere(Pcg32& rng) noexcept {
+    for (;;) {
+        const Vec3<S> p{S(2) * rng.uniform<S>() - S(1), S(2) * rng.uniform<S>() - S(1),
+                        S(2) * rng.uniform<S>() - S(1)};
+        const S r2 = glm::dot(p, p);
+        // Reject the centre too: a direction needs a length to normalise.
+        if (r2 <= S(1) && r2 > S(1e-12)) return p / std::sqrt(r2);
+    }
+}
+
+/// Uniform direction within the cone of half-angle acos(cos_max) around +z.
+/// pdf = 1 / (2 pi (1 - cos_max)).
+template <Scalar S> [[nodiscard]] Vec3<S> uniform_cone(Vec2<S> u, S cos_max) noexcept {
+    const S cos_t = S(1) - u.x * (S(1) - cos_max);
+    const S sin_t = std::sqrt(std::max(S(0), S(1) - cos_t * cos_t));
+    const S phi = S(2) * pi<S> * u.y;
+    return {sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
+}
+
+/// Solid angle of a cone with half-angle acos(cos_max), in steradians.
+template <Scalar S> [[nodiscard]] constexpr S cone_solid_angle(S cos_max) noexcept {
+    return S(2) * pi<S> * (S(1) - cos_max);
+}
+
+/// Concentric map of the unit square onto the unit disc (Shirley and Chiu 1997): area preserving,
+/// keeps strata compact. pdf = 1 / pi per unit area.
+template <Scalar S> [[nodiscard]] Vec2<S> concentric_disc(Vec2<S> u) noexcept {
+    const S a = S(2) * u.x - S(1), b = S(2) * u.y - S(1);
+    if (a == S(0) && b == S(0)) return {S(0), S(0)};
+    S r, phi;
+    if (std::abs(a) > std::abs(b)) {
+        r = a;
+        phi = (pi<S> / S(4)) * (b / a);
+    } else {
+        r = b;
+        phi = pi<S> / S(2) - (pi<S> / S(4)) * (a / b);
+    }
+    return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+/// Cosine-weighted direction on the hemisphere around +z (Malley's method).
+/// pdf = cos(theta) / pi.
+template <Scalar S> [[nodiscard]] Vec3<S> cosine_hemisphere(Vec2<S> u) noexcept {
+    const Vec2<S> d = concentric_disc(u);
+    const S z = std::sqrt(std::max(S(0), S(1) - d.x * d.x - d.y * d.y));
+    return {d.x, d.y, z};
+}
+
+/// Sample `index` of an n x n jittered grid over [0,1)^2 (stratified sampling).
+template <Scalar S>
+[[nodiscard]] Vec2<S> stratified(unsigned index, unsigned n, Vec2<S> jitter) noexcept {
+    const unsigned i = index % n, j = index / n;
+    const S inv = S(1) / S(n);
+    const S below_one = std::nextafter(S(1), S(0));
+    return {std::min((S(i) + jitter.x) * inv, below_one), std::min((S(j) + jitter.y) * inv, below_one)};
+}
+
+}  // namespace photon

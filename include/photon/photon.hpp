@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// photon: global illumination by photon mapping. This umbrella header includes every public
+// header; each can also be included on its own.
+
+#include "config.hpp"
+#include "version.hpp"
+
+#include "math/frame.hpp"
+#include "math/octahedral.hpp"
+#include "math/rng.hpp"
+#include "math/sampling.hpp"
+#include "math/transform.hpp"
+#include "math/vec.hpp"
+
+#include "geometry/bbox.hpp"
+#include "geometry/box.hpp"
+#include "geometry/bvh.hpp"
+#include "geometry/hit.hpp"
+#include "geometry/offset.hpp"
+#include "geometry/plane.hpp"
+#include "geometry/primitive.hpp"
+#include "geometry/ray.hpp"
+#include "geometry/sphere.hpp"
+#include "geometry/transformed.hpp"
+#include "geometry/triangle.hpp"
+#include "geometry/triangle_mesh.hpp"
+
+#include "material/fresnel.hpp"
+#include "material/material.hpp"
+#include "material/scatter.hpp"
+
+#include "light/cone.hpp"
+#include "light/light.hpp"
+#include "light/point_light.hpp"
+#include "light/sphere_light.hpp"
+
+#include "scene/camera.hpp"
+#include "scene/scene.hpp"
+
+#include "photonmap/kdtree.hpp"
+#include "photonmap/neighbors.hpp"
+#include "photonmap/photon.hpp"
+#include "photonmap/point_traits.hpp"
+
+#include "tracing/caustic_targets.hpp"
+#include "tracing/light_allocation.hpp"
+#include "tracing/photon_tracer.hpp"
+
+#include "estimator/density_estimate.hpp"
+#include "estimator/filters.hpp"
+#include "estimator/visible_disc.hpp"
+
+#include "integrator/boundary_probe.hpp"
+#include "integrator/direct_lighting.hpp"
+#include "integrator/radiance.hpp"
+#include "integrator/render.hpp"
+#include "integrator/render_settings.hpp"
+#include "integrator/render_stats.hpp"
+#include "integrator/shading_context.hpp"
+
+#include "film/film.hpp"
+#include "film/image_io.hpp"
+#include "film/tone_map.hpp"
+
+#include "parallel/parallel_for.hpp"

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// A scene: shapes with materials, and lights. Shapes are a closed set given as template
+// parameters (a user's own Primitive joins by being listed), stored in a std::variant and
+// dispatched with std::visit; a BVH over the bounded ones answers ray queries.
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "../geometry/box.hpp"
+#include "../geometry/bvh.hpp"
+#include "../geometry/plane.hpp"
+#include "../geometry/primitive.hpp"
+#include "../geometry/sphere.hpp"
+#include "../geometry/transformed.hpp"
+#include "../geometry/triangle.hpp"
+#include "../geometry/triangle_mesh.hpp"
+#include "../light/light.hpp"
+#include "../material/material.hpp"
+
+namespace photon {
+
+using MaterialId = std::uint32_t;
+
+/// Whether caustic photons are aimed at an object (POV-Ray's `photons { target }`).
+enum class CausticTarget : std::uint8_t {
+    automatic,  ///< yes when its material is specular (mirror or glass)
+    on,
+    off,
+};
+
+/// Per-object options besides shape and material.
+struct ObjectOptions {
+    CausticTarget caustic_target = CausticTarget::automatic;
+    bool casts_shadow = true;  ///< false: invisible to shadow rays (POV-Ray's no_shadow)
+};
+
+/// What a ray hit: the geometric hit, the object and its material.
+template <Scalar S> struct SurfaceHit {
+    Hit<S> hit;
+    std::uint32_t object = 0;
+    const Material<S>* material = nullptr;
+};
+
+template <Scalar S, Primitive... Shapes> class Scene {
+    static_assert(sizeof...(Shapes) > 0, "a Scene needs at least one shape type");
+    static_assert((std::is_same_v<scalar_of<Shapes>, S> && ...), "all shapes must use the scene's scalar type");
+
+public:
+    using scalar_type = S;
+    using Shape = std::variant<Shapes...>;
+
+    struct Object {
+        Shape shape;
+        MaterialId material;
+        ObjectOptions options;
+    };
+
+    /// Adds a material and returns its id.
+    MaterialId add_material(const Material<S>& material) {
+        materials_.push_back(material);
+        return static_cast<MaterialId>(materials_.size() - 1);
+    }
+    /// Adds an object; throws std::invalid_argument on an unknown material id.
+    std::uint32_t add(Shape shape, MaterialId material, ObjectOptions options = {}) {
+        if (material >= materials_.size())
+            throw std::invalid_argument("scene: material id " + std::to_string(material) + " does not exist");
+        objects_.push_back({std::move(shape), material, options});
+        committed_ = false;
+        return static_cast<std::uint32_t>(objects_.size() - 1);
+    }
+    /// Adds a light; throws std::invalid_argument if it is invalid.
+    void add_light(const Light<S>& light) {
+        validate(light);
+        lights_.push_back(light);
+    }
+
+    /// Builds the acceleration structure. Call after the last add() and before any query
+    /// (the commit step of Embree's API); queries are then const and thread-safe.
+    void commit(BvhConfig config = {.max_leaf_size = 2});
+    [[nodiscard]] bool committed() const noexcept { return committed_; }
+
+    [[nodiscard]] std::span<const Object> objects() const noexcept { return objects_; }
+    [[nodiscard]] std::span<const Material<S>> materials() const noexcept { return materials_; }
+    [[nodiscard]] std::span<const Light<S>> lights() const noexcept { return lights_; }
+    [[nodiscard]] const Material<S>& material_of(std::uint32_t object) const noexcept {
+        return materials_[objects_[object].material];
+    }
+    [[nodiscard]] BBox<S> object_bounds(std::uint32_t object) const {
+        return std::visit([](const auto& shape) { return shape.bounds(); }, objects_[object].shape);
+    }
+    /// Bounds of all bounded objects (infinite planes excluded).
+    [[nodiscard]] BBox<S> bounds() const noexcept { return bvh_.bounds(); }
+    /// Whether caustic photons are aimed at `object`.
+    [[nodiscard]] bool is_caustic_target(std::uint32_t object) const noexcept {
+        const auto mode = objects_[object].options.caustic_target;
+        return mode == CausticTarget::on || (mode == CausticTarget::automatic && material_of(object).is_specular());
+    }
+
+    /// Nearest hit with t in (0, ray.t_max).
+    [[nodiscard]] std::optional<SurfaceHit<S>> intersect(const Ray<S>& ray) const;
+    /// Whether anything that casts shadows lies on the ray within (0, ray.t_max).
+    [[nodiscard]] bool occluded(const Ray<S>& ray) const;
+
+private:
+    std::optional<Hit<S>> intersect_object(std::uint32_t id, const Ray<S>& ray) const {
+        return std::visit([&](const auto& shape) { return shape.intersect(ray); }, objects_[id].shape);
+    }
+    bool occludes(std::uint32_t id, const Ray<S>& ray) const {
+        if (!objects_[id].options.casts_shadow) return false;
+        return std::visit([&](const auto& shape) { return photon::occluded(shape, ray); }, objects_[id].shape);
+    }
+
+    std::vector<Object> objects_;
+    std::vector<Material<S>> materials_;
+    std::vector<Light<S>> lights_;
+    Bvh<S> bvh_;
+    std::vector<std::uint32_t> bvh_objects_;  ///< object id per BVH primitive (leaf order)
+    std::vector<std::uint32_t> unbounded_;    ///< objects tested outside the BVH (planes)
+    bool committed_ = false;
+};
+
+/// The shapes the scene language builds; user programs may list their own instead.
+template <Scalar S>
+using DefaultScene = Scene<S, Sphere<S>, Plane<S>, Box<S>, Triangle<S>, TriangleMesh<S>, Transformed<Sphere<S>>,
+                           Transformed<Box<S>>>;
+
+template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhConfig config) {
+    std::vector<BBox<S>> boxes;
+    std::vector<Vec3<S>> centers;
+    std::vector<std::uint32_t> ids;
+    unbounded_.clear();
+    for (std::uint32_t i = 0; i < objects_.size(); ++i) {
+        const BBox<S> b = object_bounds(i);
+        if (b.is_finite()) {
+            boxes.push_back(b);
+            centers.push_back(b.center());
+            ids.push_back(i);
+        } else if (!b.is_empty()) {
+            unbounded_.push_back(i);
+        }
+    }
+    bvh_ = Bvh<S>(boxes, centers, config);
+    bvh_objects_.clear();
+    for (std::uint32_t p : bvh_.primitive_indices()) bvh_objects_.push_back(ids[p]);
+    committed_ = true;
+}
+
+template <Scalar S, Primitive... Shapes>
+std::optional<SurfaceHit<S>> Scene<S, Shapes...>::intersect(const Ray<S>& ray) const {
+    PHOTON_ASSERT(committed_);
+    Ray<S> r = ray;
+    std::optional<Hit<S>> best;
+    std::uint32_t best_object = 0;
+    for (std::uint32_t id : unbounded_) {
+        if (auto hit = intersect_object(id, r)) {
+            r.t_max = hit->t;
+            best = hit;
+            best_object = id;
+        }
+    }
+    bvh_.intersect(r, [&](std::uint32_t i, Ray<S>& current) {
+        const std::uint32_t id = bvh_objects_[i];
+        auto hit = intersect_object(id, current);
+        if (!hit) return false;
+        current.t_max = hit->t;
+        best = hit;
+        best_object = id;
+        return true;
+    });
+    if (!best) return std::nullopt;
+    return SurfaceHit<S>{*best, best_object, &material_of(best_object)};
+}
+
+template <Scalar S, Primitive... Shapes> bool Scene<S, Shapes...>::occluded(const Ray<S>& ray) const {
+    PHOTON_ASSERT(committed_);
+    for (std::uint32_t id : unbounded_)
+        if (occludes(id, ray)) return true;
+    return bvh_.any_hit(ray, [&](std::uint32_t i, const Ray<S>& current) { return occludes(bvh_objects_[i], current); });
+}
+
+}  // namespace photon

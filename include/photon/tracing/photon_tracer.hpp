@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Pass 1: photon tracing (paper, sections 3.1 and 4). Photons leave the lights, bounce by Russian
+// roulette and are stored at every diffuse hit. Two independent passes fill the two maps: the
+// global pass emits over all directions; the caustic pass aims at mirrors and glass and keeps
+// only L S+ D paths. Photon i of a pass draws from random stream i, and photons are gathered in
+// fixed blocks kept in block order: the maps are bit-identical for any thread count.
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <mutex>
+#include <cstdint>
+#include <vector>
+
+#include "../geometry/offset.hpp"
+#include "../light/light.hpp"
+#include "../material/scatter.hpp"
+#include "../math/octahedral.hpp"
+#include "../parallel/parallel_for.hpp"
+#include "../photonmap/photon.hpp"
+#include "caustic_targets.hpp"
+#include "light_allocation.hpp"
+
+namespace photon {
+
+/// Which path kinds a pass stores (a set of PathKind).
+struct PathKinds {
+    bool direct = true, caustic = true, indirect = true;
+    [[nodiscard]] bool contains(PathKind k) const noexcept {
+        return k == PathKind::direct ? direct : (k == PathKind::caustic ? caustic : indirect);
+    }
+};
+
+struct PhotonTracingSettings {
+    std::size_t photons = 200'000;  ///< photons emitted by this pass (not stored)
+    unsigned max_depth = 10;        ///< surface hits followed per photon path
+    EmissionSampler sampler = EmissionSampler::direct;
+    PathKinds store{};            ///< global pass: which paths it stores (caustic pass: only L S+ D)
+    bool keep_normals = false;    ///< also return each stored photon's surface normal
+    std::uint64_t seed = 1;
+    unsigned threads = 0;         ///< 0: all hardware threads
+    std::function<void(double)> progress{};  ///< fraction of photons emitted; serialised calls
+    const std::atomic<bool>* cancel = nullptr;  ///< true: stop soon, the result is incomplete
+};
+
+/// Output of one pass.
+struct TracedPhotons {
+    std::vector<Photon> photons;
+    std::vector<std::uint16_t> normals;  ///< octahedral, facing the photon's side; if keep_normals
+    std::size_t emitted = 0;             ///< photons emitted, the count their power was divided by
+    std::uint64_t rays = 0;              ///< photon rays traced
+    double seconds = 0;
+    bool cancelled = false;              ///< stopped early by PhotonTracingSettings::cancel
+};
+
+namespace detail {
+
+constexpr std::size_t photon_block = 1024;  ///< photons per work unit, fixed for determinism
+
+struct PhotonBlock {
+    std::vector<Photon> photons;
+    std::vector<std::uint16_t> normals;
+    std::uint64_t rays = 0;
+};
+
+/// Photon index -> (light, power per photon) from the per-light counts.
+template <Scalar S> struct EmissionPlan {
+    std::vector<std::size_t> first;  // first photon index of each light
+    std::vector<Rgb<S>> scale;       // power carried by each photon of a light, before any weighting
+
+    template <class Lights> EmissionPlan(const Lights& lights, std::size_t count) {
+        const auto counts = photons_per_light<S>(lights, count);
+        std::size_t at = 0;
+        for (std::size_t l = 0; l < counts.size(); ++l) {
+            first.push_back(at);
+            scale.push_back(counts[l] ? light_power(lights[l]) / S(counts[l]) : Rgb<S>(S(0)));
+            at += counts[l];
+        }
+    }
+    [[nodiscard]] std::size_t light_of(std::size_t photon) const noexcept {
+        std::size_t l = 0;
+        while (l + 1 < first.size() && first[l + 1] <= photon) ++l;
+        return l;
+    }
+};
+
+/// Runs `per_photon(index, rng, block)` for every photon in fixed blocks, in parallel, and
+/// concatenates the blocks in order.
+template <class PerPhoton>
+TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t salt, PerPhoton&& per_photon) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t n = settings.photons;
+    const std::size_t blocks = (n + photon_block - 1) / photon_block;
+    std::vector<PhotonBlock> out(blocks);
+    std::atomic<bool> cancelled{false};
+    std::mutex report;
+    std::size_t blocks_done = 0;
+    parallel_for(blocks, 1, settings.threads, [&](std::size_t b0, std::size_t b1) {
+        for (std::size_t b = b0; b < b1; ++b) {
+            if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
+                cancelled = true;
+                return;
+            }
+            const std::size_t end = std::min(n, (b + 1) * photon_block);
+            for (std::size_t i = b * photon_block; i < end; ++i) {
+                Pcg32 rng(settings.seed ^ salt, i);
+                per_photon(i, rng, out[b]);
+            }
+            if (settings.progress) {
+                const std::lock_guard lock(report);
+                settings.progress(double(++blocks_done) / double(blocks));
+            }
+        }
+    });
+    TracedPhotons result;
+    result.cancelled = cancelled;
+    std::size_t total = 0;
+    for (const auto& b : out) total += b.photons.size();
+    result.photons.reserve(total);
+    if (settings.keep_normals) result.normals.reserve(total);
+    for (auto& b : out) {
+        result.photons.insert(result.photons.end(), b.photons.begin(), b.photons.end());
+        result.normals.insert(result.normals.end(), b.normals.begin(), b.normals.end());
+        result.rays += b.rays;
+        std::vector<Photon>().swap(b.photons);
+    }
+    result.emitted = n;
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+/// Follows one photon from `ray` with `power`. `caustic_only` stops at the first diffuse event
+/// and stores only after a specular bounce (L S+ D); otherwise paths are stored per `store`.
+template <class SceneT, Scalar S>
+void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const PhotonTracingSettings& settings,
+                       bool caustic_only, Pcg32& rng, PhotonBlock& block) {
+    bool specular_only = true;
+    for (unsigned depth = 0; depth < settings.max_depth; ++depth) {
+        const auto surface = scene.intersect(ray);
+        ++block.rays;
+        if (!surface) return;
+        const Material<S>& material = *surface->material;
+        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        if (caustic_only && depth == 0 && !material.is_specular()) return;
+        if (material.has_diffuse()) {
+            const PathKind kind = depth == 0 ? PathKind::direct : (specular_only ? PathKind::caustic : PathKind::indirect);
+            const bool keep = caustic_only ? kind == PathKind::caustic : settings.store.contains(kind);
+            if (keep) {
+                block.photons.push_back({Vec3<float>(surface->hit.point),
+                                         PackedPhoton(Rgb<float>(power), Vec3<float>(ray.direction), kind)});
+                if (settings.keep_normals) block.normals.push_back(encode_octahedral(Vec3<float>(f.normal)));
+            }
+        }
+        const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, rng);
+        if (s.event == ScatterEvent::absorbed) return;
+        if (s.event == ScatterEvent::diffuse) {
+            if (caustic_only) return;
+            specular_only = false;
+        }
+        power *= s.weight;
+        const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
+        const S error = intersection_error(surface->hit.point, ray.origin);
+        ray = Ray<S>{offset_origin(surface->hit.point, side, error), s.direction};
+    }
+}
+
+}  // namespace detail
+
+/// Global pass: `settings.photons` photons shared among the lights by power, emitted uniformly
+/// over each light's directions, stored at diffuse hits whose path kind is in `settings.store`.
+template <class SceneT> [[nodiscard]] TracedPhotons trace_global_photons(const SceneT& scene, const PhotonTracingSettings& settings) {
+    using S = typename SceneT::scalar_type;
+    const auto lights = scene.lights();
+    const detail::EmissionPlan<S> plan(lights, settings.photons);
+    return detail::run_blocks(settings, 0x676c6f62616cULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
+        const std::size_t l = plan.light_of(i);
+        const Light<S>& light = lights[l];
+        const Vec3<S> dir = sample_emission_direction(light, settings.sampler, rng);
+        const Vec3<S> origin = sample_emission_origin(light, dir, rng.uniform2<S>());
+        detail::trace_photon_path(scene, Ray<S>{origin, dir}, plan.scale[l], settings, false, rng, block);
+    });
+}
+
+/// Whether any object can form a caustic: a caustic target exists and something is diffuse.
+template <class SceneT> [[nodiscard]] bool scene_has_caustics(const SceneT& scene) {
+    bool target = false, diffuse = false;
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+        target = target || scene.is_caustic_target(i);
+        diffuse = diffuse || scene.material_of(i).has_diffuse();
+    }
+    return target && diffuse && !scene.lights().empty();
+}
+
+/// Caustic pass: photons aimed at the caustic targets' bounding spheres, stored only at the end
+/// of L S+ D paths. Empty (and free) when the scene has no caustics.
+template <class SceneT> [[nodiscard]] TracedPhotons trace_caustic_photons(const SceneT& scene, const PhotonTracingSettings& settings) {
+    using S = typename SceneT::scalar_type;
+    if (!scene_has_caustics(scene)) return {};
+    std::vector<std::pair<Vec3<S>, S>> targets;
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+        if (!scene.is_caustic_target(i)) continue;
+        const BBox<S> b = scene.object_bounds(i);
+        if (!b.is_finite()) continue;  // an infinite mirror plane cannot be aimed at
+        targets.push_back({b.center(), glm::length(b.extent()) * S(0.5)});
+    }
+    if (targets.empty()) return {};
+    const auto lights = scene.lights();
+    const detail::EmissionPlan<S> plan(lights, settings.photons);
+    std::vector<std::vector<TargetCone<S>>> cones;
+    std::vector<S> total_solid_angle;
+    for (const auto& light : lights) {
+        cones.push_back(target_cones(light, targets));
+        S sum = 0;
+        for (const auto& c : cones.back()) sum += c.solid_angle;
+        total_solid_angle.push_back(sum);
+    }
+    return detail::run_blocks(settings, 0x636175737469ULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
+        const std::size_t l = plan.light_of(i);
+        const Light<S>& light = lights[l];
+        const auto sample = sample_cone_mixture(cones[l], total_solid_angle[l], rng);
+        const auto& cone = light_cone(light);
+        if (cone && !cone->contains(sample.direction)) return;
+        // The photon carries I / (pdf * n): intensity over the density it was drawn with, where
+        // plan.scale = power / n and I = power / emission solid angle.
+        const Rgb<S> power = plan.scale[l] / (emission_solid_angle(light) * sample.pdf);
+        const Vec3<S> origin = sample_emission_origin(light, sample.direction, rng.uniform2<S>());
+        detail::trace_photon_path(scene, Ray<S>{origin, sample.direction}, power, settings, true, rng, block);
+    });
+}
+
+}  // namespace photon

@@ -1,0 +1,24 @@
+# Builds and runs tests/install/consumer twice: against the source tree (add_subdirectory) and
+# against an installed copy (find_package). Invoked by ctest with SOURCE_DIR and WORK_DIR set.
+function(step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}\n${err}")
+  endif()
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(consumer ${SOURCE_DIR}/tests/install/consumer)
+
+# 1. add_subdirectory
+step(${CMAKE_COMMAND} -S ${consumer} -B ${WORK_DIR}/subdir -DCMAKE_BUILD_TYPE=Release -DPHOTON_SOURCE_DIR=${SOURCE_DIR})
+step(${CMAKE_COMMAND} --build ${WORK_DIR}/subdir)
+step(${WORK_DIR}/subdir/consumer)
+
+# 2. install, then find_package
+step(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/photon -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_TESTS=OFF
+     -DPHOTON_BUILD_EXAMPLES=OFF -DPHOTON_BUILD_CLI=OFF -DPHOTON_INSTALL=ON -DCMAKE_INSTALL_PREFIX=${WORK_DIR}/prefix)
+step(${CMAKE_COMMAND} --install ${WORK_DIR}/photon)
+step(${CMAKE_COMMAND} -S ${consumer} -B ${WORK_DIR}/installed -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
+step(${CMAKE_COMMAND} --build ${WORK_DIR}/installed)
+step(${WORK_DIR}/installed/consumer)

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: MIT
+// Whole renders of the Cornell box at toy sizes: finite output in every mode, the same image on
+// any thread count, modes that agree, and settings that are checked.
+
+#include <catch2/catch.hpp>
+
+#include "../../examples/cornell_box.hpp"
+
+#include <cstring>
+
+using namespace photon;
+
+namespace {
+
+RenderSettings small(RenderMode mode) {
+    RenderSettings s;
+    s.mode = mode;
+    s.width = 64;
+    s.height = 48;
+    s.samples_per_pixel = 1;
+    s.shadow_samples = 4;
+    s.global_photons = 50'000;
+    s.caustic_photons = 50'000;
+    s.final_gather_rays = 16;
+    return s;
+}
+
+bool identical(const Film& a, const Film& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("Cornell box renders without NaN, Inf or negative pixels in every mode", "[render]", float, double) {
+    const auto box = cornell::make_cornell_box<TestType>();
+    for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::pm_direct}) {
+        INFO("mode " << to_string(mode));
+        const RenderResult r = render(box.scene, box.camera, small(mode));
+        CHECK(r.film.all_finite_nonnegative());
+        CHECK(r.film.mean().x > 0.05);
+        CHECK_FALSE(r.stats.partial);
+    }
+}
+
+TEST_CASE("the same seed gives the same image on 1 and 2 threads", "[render]") {
+    const auto box = cornell::make_cornell_box<float>();
+    for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::pm_direct}) {
+        RenderSettings s = small(mode);
+        s.samples_per_pixel = 4;
+        s.threads = 1;
+        const RenderResult one = render(box.scene, box.camera, s);
+        s.threads = 2;
+        const RenderResult two = render(box.scene, box.camera, s);
+        INFO("mode " << to_string(mode));
+        CHECK(identical(one.film, two.film));
+        CHECK(one.stats.global.stored == two.stats.global.stored);
+        CHECK(one.stats.rays.total() == two.stats.rays.total());
+        s.seed = 2;
+        const RenderResult other = render(box.scene, box.camera, s);
+        if (mode != RenderMode::rt || s.shadow_samples > 1) CHECK_FALSE(identical(one.film, other.film));
+    }
+}
+
+TEST_CASE("photon mapping adds indirect light to ray tracing, and its modes agree", "[render]") {
+    const auto box = cornell::make_cornell_box<float>();
+    RenderSettings s = small(RenderMode::rt);
+    s.global_photons = 200'000;
+    const double rt = render(box.scene, box.camera, s).film.mean().y;
+    s.mode = RenderMode::pm;
+    const double pm = render(box.scene, box.camera, s).film.mean().y;
+    s.final_gather_rays = 0;
+    const double pm_no_gather = render(box.scene, box.camera, s).film.mean().y;
+    s.mode = RenderMode::pm_direct;
+    const double pm_direct = render(box.scene, box.camera, s).film.mean().y;
+    CHECK(pm > 1.2 * rt);  // indirect light is a large part of a closed box
+    CHECK(pm_no_gather == Approx(pm).epsilon(0.05));
+    CHECK(pm_direct == Approx(pm).epsilon(0.05));
+}
+
+TEST_CASE("rt needs no photons; pm skips the caustic pass where nothing can make a caustic", "[render]") {
+    auto box = cornell::make_cornell_box<float>();
+    const RenderResult rt = render(box.scene, box.camera, small(RenderMode::rt));
+    CHECK(rt.stats.global.emitted == 0);
+    CHECK(rt.stats.caustic.emitted == 0);
+    const RenderResult pm = render(box.scene, box.camera, small(RenderMode::pm));
+    CHECK(pm.stats.caustic.stored > 0);
+
+    DefaultScene<float> diffuse_only;
+    diffuse_only.add(Box<float>({-1, -1, -1}, {1, 0, 1}), diffuse_only.add_material(Material<float>::lambertian(Rgb<float>(0.5f))));
+    diffuse_only.add_light(PointLight<float>{{0, 1, 0}, Rgb<float>(10)});
+    diffuse_only.commit();
+    const RenderResult d = render(diffuse_only, box.camera, small(RenderMode::pm));
+    CHECK(d.stats.caustic.emitted == 0);
+    CHECK(d.stats.global.emitted > 0);
+}
+
+TEST_CASE("cancelling a render returns a partial image", "[render]") {
+    const auto box = cornell::make_cornell_box<float>();
+    std::atomic<bool> cancel{true};
+    RenderSettings s = small(RenderMode::rt);
+    s.cancel = &cancel;
+    const RenderResult r = render(box.scene, box.camera, s);
+    CHECK(r.stats.partial);
+    CHECK(r.film.all_finite_nonnegative());
+}
+
+TEST_CASE("settings and materials out of range are errors", "[render]") {
+    const auto box = cornell::make_cornell_box<float>();
+    RenderSettings s = small(RenderMode::pm);
+    s.width = 0;
+    CHECK_THROWS_AS(render(box.scene, box.camera, s), std::invalid_argument);
+    s = small(RenderMode::pm);
+    s.global_estimate.max_radius = -1;
+    CHECK_THROWS_AS(render(box.scene, box.camera, s), std::invalid_argument);
+    CHECK_THROWS_WITH(Material<float>({.diffuse = Rgb<float>(0.7f), .specular = Rgb<float>(0.4f)}),
+                      Catch::Contains("> 1 in the red channel"));
+    CHECK_THROWS_AS(Material<float>::glass(0.0f), std::invalid_argument);
+    CHECK_THROWS_AS(Material<float>::lambertian({-0.1f, 0.5f, 0.5f}), std::invalid_argument);
+}
