@@ -1,0 +1,458 @@
+// SPDX-License-Identifier: MIT
+// photon: renders POV-Ray scene files by photon mapping.
+//
+//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct ...]
+//   photon check scene.pov
+//   photon export-pov scene.pov -o flat.pov
+
+#include <CLI/CLI.hpp>
+
+#include <photon/dsl/dsl.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace {
+
+namespace dsl = photon::dsl;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr int exit_error = 1;
+constexpr int exit_usage = 2;
+constexpr int exit_interrupted = 130;
+
+std::atomic<bool> cancel_requested{false};
+
+extern "C" void on_interrupt(int) {
+    if (cancel_requested.load()) _exit(exit_interrupted);
+    cancel_requested.store(true);
+    static const char message[] =
+        "\nphoton: interrupted: stopping, the image so far will be written "
+        "(press Ctrl-C again to quit at once)\n";
+    [[maybe_unused]] const auto n = ::write(STDERR_FILENO, message, sizeof message - 1);
+}
+
+/// Options shared by every command that reads a scene.
+struct SceneOptions {
+    std::string scene;
+    std::vector<std::string> defines;
+    std::vector<std::string> include_paths;
+    bool strict = false;
+    bool quiet = false;
+    std::size_t warnings = 0;
+
+    void add_to(CLI::App& cmd) {
+        cmd.add_option("scene", scene, "The scene file (POV-Ray 3.7 language, see docs/scene-language.md)")
+            ->required()
+            ->check(CLI::ExistingFile);
+        // One value per flag, so that `-D A=1 scene.pov` leaves the scene alone; repeat the flag.
+        cmd.add_option("-D,--define", defines, "Declare a float before reading the scene: NAME=VALUE (repeatable)")
+            ->allow_extra_args(false)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+        cmd.add_option("-I,--include-path", include_paths, "Also look for #include files in DIR (repeatable)")
+            ->allow_extra_args(false)
+            ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+        cmd.add_flag("--strict", strict, "Treat warnings as errors (exit status 1)");
+        cmd.add_flag("-q,--quiet", quiet, "Print errors only");
+    }
+
+    dsl::DiagnosticSink sink() {
+        return [this](const dsl::Diagnostic& d) {
+            ++warnings;
+            if (!quiet || strict) std::cerr << dsl::format_diagnostic(d) << '\n';
+        };
+    }
+
+    dsl::ParseOptions parse_options(unsigned width, unsigned height) {
+        dsl::ParseOptions o;
+        o.diagnostics = sink();
+        o.image_width = width;
+        o.image_height = height;
+        for (const auto& dir : include_paths) o.include_paths.emplace_back(dir);
+        for (const auto& d : defines) {
+            const auto eq = d.find('=');
+            const std::string name = d.substr(0, eq);
+            double value = 1;
+            if (eq != std::string::npos) {
+                try {
+                    std::size_t used = 0;
+                    value = std::stod(d.substr(eq + 1), &used);
+                    if (used != d.size() - eq - 1) throw std::invalid_argument("trailing characters");
+                } catch (const std::exception&) {
+                    throw std::invalid_argument("--define " + d + ": expected NAME=NUMBER");
+                }
+            }
+            if (name.empty()) throw std::invalid_argument("--define " + d + ": expected NAME=NUMBER");
+            o.defines[name] = value;
+        }
+        return o;
+    }
+
+    /// Exit status 1 under --strict when there were warnings.
+    [[nodiscard]] bool failed_strict() const {
+        if (!strict || warnings == 0) return false;
+        std::cerr << "photon: " << warnings << " warning" << (warnings == 1 ? "" : "s") << " (--strict)\n";
+        return true;
+    }
+};
+
+struct RenderOptions {
+    std::string output;
+    std::optional<unsigned> width, height, spp, shadow_samples, final_gather, ray_depth, photon_depth, threads;
+    std::optional<unsigned> global_k, caustic_k;
+    std::optional<float> global_radius, caustic_radius;
+    std::optional<std::size_t> global_photons, caustic_photons;
+    std::optional<std::uint64_t> seed;
+    std::string mode;
+    float exposure = 1.0f;
+    bool no_stats = false;
+};
+
+std::string vec(const photon::Vec3<float>& v) {
+    std::ostringstream s;
+    s << '<' << v.x << ", " << v.y << ", " << v.z << '>';
+    return s.str();
+}
+
+std::string rgb(const photon::Rgb<float>& c) {
+    std::ostringstream s;
+    if (c.x == c.y && c.y == c.z)
+        s << c.x;
+    else
+        s << '<' << c.x << ", " << c.y << ", " << c.z << '>';
+    return s.str();
+}
+
+std::string settings_line(const photon::RenderSettings& s) {
+    std::ostringstream o;
+    o << s.width << " x " << s.height << ", mode " << photon::to_string(s.mode) << ", " << s.samples_per_pixel
+      << " samples per pixel, ray depth " << s.max_ray_depth << ", " << s.shadow_samples << " shadow samples";
+    if (s.mode != photon::RenderMode::rt)
+        o << "; photons: " << s.global_photons << " global (k " << s.global_estimate.k << ", radius "
+          << s.global_estimate.max_radius << "), " << s.caustic_photons << " caustic (k " << s.caustic_estimate.k
+          << ", radius " << s.caustic_estimate.max_radius << "), photon depth " << s.max_photon_depth
+          << ", final gather " << s.final_gather_rays;
+    o << ", seed " << s.seed;
+    return o.str();
+}
+
+/// Prints what the scene holds: the report of `photon check`.
+void report(const std::string& file, const dsl::SceneDescription& desc, const dsl::BuiltScene<float>& b) {
+    const auto& scene = b.scene;
+    std::cout << "scene      " << file << " (" << desc.files.size() << " file" << (desc.files.size() == 1 ? "" : "s")
+              << ")\n";
+    const auto& cam = b.camera;
+    const float hfov =
+        2.0f * std::atan(0.5f * glm::length(cam.right()) / glm::length(cam.direction())) * 180.0f / photon::pi<float>;
+    std::cout << "camera     location " << vec(cam.location()) << ", direction " << vec(cam.direction()) << ", right "
+              << vec(cam.right()) << ", up " << vec(cam.up()) << " (horizontal field of view " << hfov << " deg)\n";
+    std::cout << "lights     " << scene.lights().size() << '\n';
+    for (const auto& light : scene.lights()) {
+        const float radius = photon::light_radius(light);
+        std::cout << "           " << (radius > 0 ? "sphere light" : "point light") << " at "
+                  << vec(photon::light_center(light));
+        if (radius > 0) std::cout << ", radius " << radius;
+        std::cout << ", power " << rgb(photon::light_power(light)) << " W, intensity "
+                  << rgb(photon::radiant_intensity(light)) << " W/sr";
+        if (const auto& cone = photon::light_cone(light))
+            std::cout << ", cone " << vec(cone->axis()) << " half-angle " << cone->half_angle_degrees() << " deg";
+        std::cout << '\n';
+    }
+    std::map<std::string, std::size_t> kinds;
+    std::size_t targets = 0, shadowless = 0;
+    constexpr const char* names[] = {"sphere",         "plane", "box", "triangle", "mesh", "transformed sphere",
+                                     "transformed box"};
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+        const auto& o = scene.objects()[i];
+        ++kinds[names[o.shape.index()]];
+        targets += scene.is_caustic_target(i);
+        shadowless += !o.options.casts_shadow;
+    }
+    std::cout << "objects    " << scene.objects().size() << ':';
+    const char* sep = " ";
+    for (const auto& [name, n] : kinds) std::cout << sep << n << ' ' << name, sep = ", ";
+    std::cout << "; " << targets << " caustic target" << (targets == 1 ? "" : "s");
+    if (shadowless) std::cout << ", " << shadowless << " without shadow";
+    std::cout << '\n';
+    std::cout << "materials  " << scene.materials().size() << '\n';
+    for (std::size_t i = 0; i < scene.materials().size(); ++i) {
+        const auto& p = scene.materials()[i].params();
+        std::cout << "           #" << i << ": diffuse " << rgb(p.diffuse) << ", mirror " << rgb(p.specular)
+                  << ", transmission " << rgb(p.transmission);
+        if (p.transmission != photon::Rgb<float>(0) || p.fresnel)
+            std::cout << ", ior " << p.ior << (p.fresnel ? " (Fresnel)" : "");
+        if (p.phong > 0) std::cout << ", phong " << p.phong << " size " << p.phong_exponent;
+        std::cout << '\n';
+    }
+    std::cout << "settings   " << settings_line(b.settings) << '\n';
+}
+
+/// Progress of pass 2: a bar on a terminal, a line every 10% otherwise.
+class Progress {
+public:
+    explicit Progress(bool enabled) : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0), start_(Clock::now()) {}
+
+    /// One report of `phase` being `fraction` done; a new phase starts a new bar (or new lines).
+    void operator()(photon::RenderPhase phase, double fraction) {
+        if (!enabled_) return;
+        const std::lock_guard lock(mutex_);
+        if (phase != phase_) {
+            if (tty_ && last_ >= 0 && !line_done_) std::fputc('\n', stderr);
+            phase_ = phase;
+            start_ = Clock::now();
+            last_ = -1;
+            step_ = 0;
+            line_done_ = false;
+        }
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+        const char* label = photon::to_string(phase);
+        if (tty_) {
+            if (fraction < 1.0 && last_ >= 0 && elapsed - last_ < 0.1) return;
+            last_ = elapsed;
+            constexpr int width = 40;
+            const int filled = int(fraction * width);
+            std::string bar(std::size_t(filled), '#');
+            bar.append(std::size_t(width - filled), '-');
+            const double left = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+            std::fprintf(stderr, "\rphoton: %-24s [%s] %3d%%  %.1f s, %.1f s left  ", label, bar.c_str(),
+                         int(fraction * 100), elapsed, left);
+            if (fraction >= 1.0) {
+                std::fputc('\n', stderr);
+                line_done_ = true;
+            }
+        } else {
+            const int step = int(fraction * 10);
+            if (step <= step_) return;
+            step_ = step;
+            std::fprintf(stderr, "photon: %s %d%% (%.1f s)\n", label, step * 10, elapsed);
+        }
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (enabled_ && tty_ && last_ >= 0 && !line_done_) std::fputc('\n', stderr);
+    }
+
+private:
+    bool enabled_, tty_;
+    Clock::time_point start_;
+    std::mutex mutex_;
+    photon::RenderPhase phase_ = photon::RenderPhase::image;
+    double last_ = -1;
+    int step_ = 0;
+    bool line_done_ = false;
+};
+
+photon::RenderMode parse_mode(const std::string& m) {
+    if (m == "rt") return photon::RenderMode::rt;
+    if (m == "pm") return photon::RenderMode::pm;
+    if (m == "reference") return photon::RenderMode::reference;
+    return photon::RenderMode::pm_direct;
+}
+
+int run_render(SceneOptions& so, const RenderOptions& ro) {
+    const fs::path output(ro.output);
+    photon::check_writable_image_path(output);
+    dsl::BuildOptions bo;
+    bo.diagnostics = so.sink();
+    auto& o = bo.overrides;
+    o.width = ro.width, o.height = ro.height;
+    if (!ro.mode.empty()) o.mode = parse_mode(ro.mode);
+    o.global_photons = ro.global_photons, o.caustic_photons = ro.caustic_photons;
+    o.samples_per_pixel = ro.spp, o.shadow_samples = ro.shadow_samples, o.final_gather_rays = ro.final_gather;
+    o.max_ray_depth = ro.ray_depth, o.max_photon_depth = ro.photon_depth, o.threads = ro.threads, o.seed = ro.seed;
+    o.global_k = ro.global_k, o.caustic_k = ro.caustic_k, o.global_radius = ro.global_radius,
+    o.caustic_radius = ro.caustic_radius;
+
+    const dsl::SceneDescription desc =
+        dsl::parse_file(so.scene, so.parse_options(ro.width.value_or(800), ro.height.value_or(600)));
+    dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
+    if (so.failed_strict()) return exit_error;
+    photon::RenderSettings& settings = built.settings;
+    if (!so.quiet) {
+        std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
+                  << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "
+                  << built.scene.materials().size() << " materials\n"
+                  << "photon: " << settings_line(settings) << '\n';
+    }
+
+    Progress progress(!so.quiet);
+    settings.progress = [&](photon::RenderPhase phase, double f) { progress(phase, f); };
+    settings.cancel = &cancel_requested;
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+
+    const photon::RenderResult result = photon::render(built.scene, built.camera, settings);
+    const bool partial = result.stats.partial || cancel_requested.load();
+    if (partial) progress.finish();
+
+    photon::ImageWriteOptions wo;
+    wo.exposure = ro.exposure;
+    wo.metadata = {
+        {"photon:partial", partial ? "true" : "false"},
+        {"photon:scene", so.scene},
+        {"photon:mode", photon::to_string(settings.mode)},
+        {"photon:settings", settings_line(settings)},
+        {"photon:version", std::to_string(photon::version_major) + "." + std::to_string(photon::version_minor) + "." +
+                               std::to_string(photon::version_patch)}};
+    fs::path written = output;
+    std::error_code ec;
+    if (partial && fs::exists(output, ec)) {
+        // Never replace a finished image by an unfinished one.
+        written.replace_filename(output.stem().string() + ".partial" + output.extension().string());
+    }
+    photon::write_image(written, result.film, wo);
+    if (!so.quiet || partial) {
+        std::cerr << "photon: wrote " << written.string()
+                  << (partial ? " (PARTIAL: interrupted, marked photon:partial=true)" : "") << '\n';
+    }
+    if (!ro.no_stats && !so.quiet) std::cout << photon::format_stats(result.stats);
+    return partial ? exit_interrupted : EXIT_SUCCESS;
+}
+
+int run_check(SceneOptions& so) {
+    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
+    dsl::BuildOptions bo;
+    bo.diagnostics = so.sink();
+    const dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
+    report(so.scene, desc, built);
+    std::cout << "warnings   " << so.warnings << '\n';
+    return so.failed_strict() ? exit_error : EXIT_SUCCESS;
+}
+
+int run_export(SceneOptions& so, const std::string& output) {
+    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
+    const std::string text = dsl::export_pov(desc);
+    if (output.empty() || output == "-") {
+        std::cout << text;
+    } else {
+        const fs::path path(output);
+        fs::path tmp = path;
+        tmp.replace_filename("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+        {
+            std::ofstream out(tmp, std::ios::binary);
+            out << text;
+            out.close();
+            if (!out) {
+                std::error_code ec;
+                fs::remove(tmp, ec);
+                throw std::runtime_error("cannot write " + output);
+            }
+        }
+        std::error_code ec;
+        fs::rename(tmp, path, ec);
+        if (ec) {
+            fs::remove(tmp, ec);
+            throw std::runtime_error("cannot write " + output + ": " + ec.message());
+        }
+        if (!so.quiet) std::cerr << "photon: wrote " << output << '\n';
+    }
+    return so.failed_strict() ? exit_error : EXIT_SUCCESS;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"photon: global illumination by photon mapping (Jensen 1996) for POV-Ray 3.7 scene files.", "photon"};
+    app.footer(
+        "Examples:\n"
+        "  photon render examples/scenes/cornell.pov -o cornell.png\n"
+        "  photon render examples/scenes/room1.pov -o room1.exr --width 400 --height 300 --mode rt\n"
+        "  photon check examples/scenes/room2.pov\n"
+        "  photon export-pov my.pov -o flat.pov   # one self-contained file for POV-Ray\n"
+        "\n"
+        "Settings come from the scene file (global_settings, and photon's own settings inside\n"
+        "#ifdef (photon_version) ... #end); command-line options override them. The language, its\n"
+        "units and the settings are described in docs/scene-language.md. Exit status: 0 success,\n"
+        "1 error, 2 bad usage, 130 interrupted (the image so far is written, marked partial).");
+    app.set_version_flag("--version", std::to_string(photon::version_major) + "." +
+                                          std::to_string(photon::version_minor) + "." +
+                                          std::to_string(photon::version_patch));
+    app.require_subcommand(1);
+
+    SceneOptions so;
+    RenderOptions ro;
+    std::string export_output;
+
+    CLI::App* render = app.add_subcommand("render", "Render a scene file to an image");
+    so.add_to(*render);
+    render
+        ->add_option("-o,--output", ro.output,
+                     "Image to write: .png, .exr, .jpg, .tif, .hdr (anything OpenImageIO writes). "
+                     "Floating-point formats hold radiance, 8-bit ones sRGB")
+        ->required();
+    render->add_option("--width", ro.width, "Image width in pixels")->check(CLI::Range(1u, 65536u));
+    render->add_option("--height", ro.height, "Image height in pixels")->check(CLI::Range(1u, 65536u));
+    render
+        ->add_option("--mode", ro.mode,
+                     "rt: ray tracing, direct light only; pm: photon mapping (global illumination); "
+                     "pm-direct: everything read from the photon maps")
+        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct"}));
+    render->add_option("--global-photons", ro.global_photons, "Photons emitted for the global map");
+    render->add_option("--caustic-photons", ro.caustic_photons,
+                       "Photons emitted towards mirrors and glass for the caustic map");
+    render->add_option("--global-k", ro.global_k, "Photons per global estimate")->check(CLI::PositiveNumber);
+    render->add_option("--global-radius", ro.global_radius, "Largest radius of a global estimate (scene units)")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--caustic-k", ro.caustic_k, "Photons per caustic estimate")->check(CLI::PositiveNumber);
+    render->add_option("--caustic-radius", ro.caustic_radius, "Largest radius of a caustic estimate")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--spp", ro.spp, "Samples per pixel (anti-aliasing)")->check(CLI::PositiveNumber);
+    render->add_option("--shadow-samples", ro.shadow_samples, "Shadow rays per area light and shading point")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--final-gather", ro.final_gather,
+                       "Final gather rays per diffuse hit in pm mode (0: read the global map)");
+    render->add_option("--ray-depth", ro.ray_depth, "Longest camera path, primary ray = 1 (POV-Ray's max_trace_level)")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--photon-depth", ro.photon_depth, "Most bounces of a photon")->check(CLI::PositiveNumber);
+    render->add_option("--threads", ro.threads, "Worker threads (0: all cores); the image does not depend on it");
+    render->add_option("--seed", ro.seed, "Random seed; the same seed gives the same image");
+    render->add_option("--exposure", ro.exposure, "Multiplies radiance before 8-bit output (PNG, JPEG)")
+        ->check(CLI::PositiveNumber);
+    render->add_flag("--no-stats", ro.no_stats, "Do not print the statistics table");
+
+    CLI::App* check = app.add_subcommand("check", "Read and build a scene, report what it holds and any warnings");
+    so.add_to(*check);
+
+    CLI::App* export_pov = app.add_subcommand(
+        "export-pov",
+        "Write the scene as one self-contained POV-Ray 3.7 file (declarations, includes and expressions "
+        "evaluated; photon's own settings inside #ifdef (photon_version))");
+    so.add_to(*export_pov);
+    export_pov->add_option("-o,--output", export_output, "File to write (default: standard output)");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? EXIT_SUCCESS : exit_usage;
+    }
+
+    try {
+        if (render->parsed()) return run_render(so, ro);
+        if (check->parsed()) return run_check(so);
+        return run_export(so, export_output);
+    } catch (const dsl::Error& e) {
+        std::cerr << e.what() << '\n';
+    } catch (const std::exception& e) {
+        std::cerr << "photon: error: " << e.what() << '\n';
+    }
+    return exit_error;
+}

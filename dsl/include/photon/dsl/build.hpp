@@ -1,0 +1,543 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// From a SceneDescription to the library's objects: DefaultScene<S>, PinholeCamera<S> and
+// RenderSettings. This is where POV-Ray's meaning becomes physics: the light-unit rule (a
+// light's colour and fade give its radiant intensity), the finish-to-reflectance rule, the camera
+// in POV-Ray's order of application. Library constructors that reject a value
+// (std::invalid_argument) are reported as dsl::Error at the place the value was written.
+
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <photon/photon.hpp>
+
+#include "description.hpp"
+#include "diagnostics.hpp"
+#include "value.hpp"
+
+namespace photon::dsl {
+
+/// Settings given outside the scene file (the command line); each one present overrides the file.
+struct SettingsOverrides {
+    std::optional<unsigned> width, height;
+    std::optional<RenderMode> mode;
+    std::optional<std::size_t> global_photons, caustic_photons;
+    std::optional<unsigned> samples_per_pixel, shadow_samples, final_gather_rays, max_ray_depth, max_photon_depth;
+    std::optional<unsigned> threads;
+    std::optional<std::uint64_t> seed;
+    std::optional<unsigned> global_k, caustic_k;
+    std::optional<float> global_radius, caustic_radius;
+};
+
+struct BuildOptions {
+    SettingsOverrides overrides;
+    DiagnosticSink diagnostics;
+};
+
+template <Scalar S>
+struct BuiltScene {
+    DefaultScene<S> scene;
+    PinholeCamera<S> camera;
+    RenderSettings settings;
+};
+
+/// Reports a warning once per place and message.
+class Warnings {
+public:
+    explicit Warnings(DiagnosticSink sink) : sink_(std::move(sink)) {}
+    void operator()(const SourceLocation& at, const std::string& message) {
+        if (!seen_.insert(at.str() + '\x1f' + message).second) return;
+        if (sink_) sink_({Severity::warning, at, message});
+    }
+
+private:
+    DiagnosticSink sink_;
+    std::set<std::string> seen_;
+};
+
+/// The camera's vectors after POV-Ray's rules, in world space.
+struct ResolvedCamera {
+    Vector3 location, direction, right, up;
+};
+
+/// POV-Ray 3.7's camera: `right` defaults to <aspect, 0, 0>; then `angle` sets |direction| =
+/// |right| / (2 tan(angle / 2)); then `look_at` turns direction, right and up towards the
+/// target keeping their lengths, right = sky x direction (sign kept from the handedness of the
+/// given up, direction, right), up = direction x right; then the transformations apply.
+[[nodiscard]] inline ResolvedCamera resolve_camera(const CameraDescription& cam, double aspect) {
+    auto where = [&](const char* item) {
+        const auto it = cam.written.find(item);
+        return it != cam.written.end() ? it->second : cam.at;
+    };
+    ResolvedCamera r{cam.location, cam.direction, cam.right.value_or(Vector3(aspect, 0, 0)), cam.up};
+    if (cam.angle) {
+        if (glm::length(r.direction) == 0.0) throw Error(where("direction"), "camera direction must not be zero");
+        const double len = 0.5 * glm::length(r.right) / std::tan(*cam.angle * 3.14159265358979323846 / 360.0);
+        r.direction = glm::normalize(r.direction) * len;
+    }
+    if (cam.look_at) {
+        const double dir_len = glm::length(r.direction), up_len = glm::length(r.up), right_len = glm::length(r.right);
+        const double handedness = glm::dot(glm::cross(r.up, r.direction), r.right);
+        const Vector3 forward = *cam.look_at - r.location;
+        if (glm::length(forward) == 0.0) throw Error(where("look_at"), "camera look_at equals its location");
+        const Vector3 d = glm::normalize(forward);
+        const Vector3 side = glm::cross(cam.sky, d);
+        if (glm::length(side) == 0.0)
+            throw Error(where("look_at"),
+                        "camera sky (default y) is parallel to the viewing direction: give another `sky`");
+        const Vector3 right = glm::normalize(side);
+        r.up = glm::normalize(glm::cross(d, right)) * up_len;
+        r.direction = d * dir_len;
+        r.right = right * (handedness > 0 ? right_len : -right_len);
+    }
+    r.location = cam.transform.point(r.location);
+    r.direction = cam.transform.vector(r.direction);
+    r.right = cam.transform.vector(r.right);
+    r.up = cam.transform.vector(r.up);
+    return r;
+}
+
+/// Radiant intensity (W/sr per channel) of a POV-Ray light. With `fade_power 2` and
+/// `fade_distance D`, POV-Ray's brightness at distance d >> D is colour * 2 D^2 / d^2, which is
+/// a point light of intensity I = 2 pi D^2 colour (docs/scene-language.md). Without a fade,
+/// POV-Ray's light does not fall off; photon's light does, and matches POV-Ray at distance 1:
+/// I = pi colour, with a warning.
+[[nodiscard]] inline Vector3 radiant_intensity(const LightSource& l, Warnings* warn = nullptr) {
+    constexpr double pi_d = 3.14159265358979323846;
+    const auto item = [&](const char* k) {
+        const auto it = l.written.find(k);
+        return it != l.written.end() ? it->second : l.at;
+    };
+    const double d = l.fade_distance;
+    if (d > 0 && l.fade_power == 2) return 2 * pi_d * d * d * l.color.rgb;
+    if (d > 0 && l.fade_power > 0) {
+        if (warn)
+            (*warn)(item("fade_power"),
+                    "fade_power " + format_number(l.fade_power) +
+                        ": photon's lights fall off as 1/d^2; the colour is read as for fade_power 2 "
+                        "(intensity 2 pi fade_distance^2 colour)");
+        return 2 * pi_d * d * d * l.color.rgb;
+    }
+    if (warn)
+        (*warn)(l.at,
+                "light_source without `fade_distance` and `fade_power 2`: POV-Ray's light does not fall off with "
+                "distance, photon's falls off as 1/d^2; photon reads the colour as the intensity pi * colour W/sr "
+                "(POV-Ray's brightness at distance 1). Write `fade_distance D fade_power 2` with colour "
+                "I / (2 pi D^2) for an intensity I");
+    return pi_d * l.color.rgb;
+}
+
+/// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
+/// (1 - filter - transmit); transmission = filter * pigment + transmit; mirror reflectance from
+/// `reflection`; `reflection { 0, 1 fresnel on }` with `conserve_energy` makes Fresnel glass;
+/// phong and phong_size carry over. Finish items photon does not render are reported to `warn`;
+/// a surface reflecting more than it receives is a dsl::Error at its finish (at `object` for a
+/// default texture, which was written nowhere).
+template <Scalar S>
+[[nodiscard]] MaterialParams<S> material_params(const Texture& tex, const Interior* interior,
+                                                const GlobalSettings& global, Warnings& warn,
+                                                const SourceLocation& object = {}) {
+    const Finish& f = tex.finish;
+    const Color& pc = tex.pigment.color;
+    const SourceLocation at = f.at.known() ? f.at : (tex.at.known() ? tex.at : object);
+    auto item = [&](const char* k) {
+        const auto it = f.written.find(k);
+        return it != f.written.end() ? it->second : at;
+    };
+    const double ior = interior ? interior->ior : 1.0;
+    const SourceLocation pigment_at = tex.pigment.at.known() ? tex.pigment.at : at;
+    if (pc.filter < 0 || pc.transmit < 0 || pc.filter + pc.transmit > 1 + 1e-9)
+        throw Error(pigment_at, "pigment filter and transmit must be >= 0 with a sum <= 1, found filter " +
+                                    format_number(pc.filter) + " and transmit " + format_number(pc.transmit));
+    const double opacity = std::max(0.0, 1.0 - pc.filter - pc.transmit);
+    const Vector3 diffuse = f.diffuse * pc.rgb * opacity;
+    Vector3 transmission = pc.filter * pc.rgb + Vector3(pc.transmit);
+    Vector3 specular(0.0);
+    bool fresnel = false;
+    if (f.reflection) {
+        const Reflection& r = *f.reflection;
+        if (r.fresnel && transmission != Vector3(0.0)) {
+            fresnel = true;
+            if (r.min != Vector3(0.0) || r.max != Vector3(1.0))
+                warn(r.at,
+                     "photon's Fresnel glass reflects F(angle, ior) exactly; the range of `reflection { min, max "
+                     "fresnel }` is read as { 0, 1 }");
+            if (!f.conserve_energy)
+                warn(r.at,
+                     "`fresnel on` without `conserve_energy`: POV-Ray adds the reflection on top of the transmitted "
+                     "light, photon takes it out of it (as with conserve_energy)");
+        } else if (r.fresnel) {
+            const double f0 = ((ior - 1) / (ior + 1)) * ((ior - 1) / (ior + 1));
+            specular = r.min + (r.max - r.min) * f0;
+            warn(r.at, "`fresnel` on an opaque surface: photon's mirror reflects F(0) = " + format_number(f0) +
+                           " at every angle (POV-Ray varies it with the angle)");
+        } else {
+            specular = r.max;
+            if (r.variable && r.min != r.max)
+                warn(r.at,
+                     "`reflection { min, max }` varies with the angle in POV-Ray; photon's mirror reflects the "
+                     "maximum at every angle");
+            if (f.conserve_energy) transmission *= Vector3(1.0) - specular;
+        }
+        if (r.falloff != 1 || r.exponent != 1 || r.metallic != 0)
+            warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon");
+    }
+    const Vector3 ambient = f.ambient * global.ambient_light;
+    if (ambient != Vector3(0.0))
+        warn(item("ambient"),
+             std::string(f.written.count("ambient") ? "`ambient`" : "POV-Ray's default `ambient 0.1`") +
+                 " is ignored: photon has no ambient light. Write `finish { ambient 0 }` or "
+                 "`global_settings { ambient_light 0 }`");
+    if (f.brilliance != 1)
+        warn(item("brilliance"), "`brilliance " + format_number(f.brilliance) +
+                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)");
+    if (f.specular != 0)
+        warn(item("specular"),
+             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight");
+    if (f.emission != Vector3(0.0))
+        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon");
+    if (f.diffuse_back != 0) warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon");
+    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon");
+    for (const char* k : {"irid", "crand"})
+        if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon");
+
+    constexpr const char* channel[] = {"red", "green", "blue"};
+    for (int c = 0; c < 3; ++c) {
+        const double sum = diffuse[c] + specular[c] + transmission[c];
+        if (sum > 1 + 1e-9)
+            throw Error(at, std::string("the surface reflects more light than it receives: diffuse ") +
+                                format_number(diffuse[c]) + " + reflection " + format_number(specular[c]) +
+                                " + transmission " + format_number(transmission[c]) + " = " + format_number(sum) +
+                                " > 1 in the " + channel[c] + " channel");
+    }
+    MaterialParams<S> p;
+    p.diffuse = Rgb<S>(diffuse);
+    p.specular = Rgb<S>(specular);
+    p.transmission = Rgb<S>(transmission);
+    p.ior = S(ior);
+    p.fresnel = fresnel;
+    p.phong = S(f.phong);
+    p.phong_exponent = S(f.phong_size);
+    return p;
+}
+
+/// Render settings from the file (POV-Ray's keywords where they mean the same, photon's own
+/// otherwise), then `overrides`. Throws dsl::Error if the result is out of range.
+[[nodiscard]] inline RenderSettings render_settings(const SceneDescription& desc, const SettingsOverrides& o,
+                                                    Warnings& warn) {
+    RenderSettings s;
+    const GlobalSettings& g = desc.settings;
+    const PhotonSettings& p = g.photon;
+    if (g.max_trace_level) s.max_ray_depth = *g.max_trace_level;
+    if (g.photons) {
+        const PovPhotons& ph = *g.photons;
+        if (ph.count)
+            s.caustic_photons = std::size_t(*ph.count);
+        else if (ph.spacing)
+            warn(ph.at,
+                 "photons `spacing` has no photon equivalent: photon shoots a number of photons (`count`, or "
+                 "`caustic_photons` in photon's own settings)");
+        if (ph.gather_max) s.caustic_estimate.k = *ph.gather_max;
+        if (ph.radius) s.caustic_estimate.max_radius = float(*ph.radius);
+        if (ph.max_trace_level) s.max_photon_depth = *ph.max_trace_level;
+    }
+    if (p.width) s.width = *p.width;
+    if (p.height) s.height = *p.height;
+    if (p.render_mode)
+        s.mode =
+            *p.render_mode == "rt" ? RenderMode::rt : (*p.render_mode == "pm" ? RenderMode::pm : RenderMode::pm_direct);
+    if (p.global_photons) s.global_photons = std::size_t(*p.global_photons);
+    if (p.caustic_photons) s.caustic_photons = std::size_t(*p.caustic_photons);
+    for (auto [from, to] :
+         {std::pair{&p.global_estimate, &s.global_estimate}, std::pair{&p.caustic_estimate, &s.caustic_estimate}}) {
+        if (from->count) to->k = *from->count;
+        if (from->radius) to->max_radius = float(*from->radius);
+        if (from->flatten) to->flatten = float(*from->flatten);
+        if (from->probes) to->boundary_probes = *from->probes;
+    }
+    if (p.max_photon_depth) s.max_photon_depth = *p.max_photon_depth;
+    if (p.final_gather) s.final_gather_rays = *p.final_gather;
+    if (p.samples_per_pixel) s.samples_per_pixel = *p.samples_per_pixel;
+    if (p.irradiance_stride) s.irradiance_stride = *p.irradiance_stride;
+    if (p.seed) s.seed = *p.seed;
+    if (p.shadow_samples) {
+        s.shadow_samples = *p.shadow_samples;
+    } else {
+        // POV-Ray's area_light N1 x N2 grid is its number of shadow rays per light.
+        unsigned most = 0;
+        std::function<void(const Object&)> visit = [&](const Object& obj) {
+            if (const auto* l = std::get_if<LightSource>(&obj.shape); l && l->area)
+                most = std::max(most, unsigned(l->area->size1 * l->area->size2));
+            if (const auto* u = std::get_if<UnionShape>(&obj.shape))
+                for (const auto& c : u->children) visit(*c);
+        };
+        for (const Object& obj : desc.objects) visit(obj);
+        if (most > 1) s.shadow_samples = most;
+    }
+    if (o.width) s.width = *o.width;
+    if (o.height) s.height = *o.height;
+    if (o.mode) s.mode = *o.mode;
+    if (o.global_photons) s.global_photons = *o.global_photons;
+    if (o.caustic_photons) s.caustic_photons = *o.caustic_photons;
+    if (o.samples_per_pixel) s.samples_per_pixel = *o.samples_per_pixel;
+    if (o.shadow_samples) s.shadow_samples = *o.shadow_samples;
+    if (o.final_gather_rays) s.final_gather_rays = *o.final_gather_rays;
+    if (o.max_ray_depth) s.max_ray_depth = *o.max_ray_depth;
+    if (o.max_photon_depth) s.max_photon_depth = *o.max_photon_depth;
+    if (o.threads) s.threads = *o.threads;
+    if (o.seed) s.seed = *o.seed;
+    if (o.global_k) s.global_estimate.k = *o.global_k;
+    if (o.caustic_k) s.caustic_estimate.k = *o.caustic_k;
+    if (o.global_radius) s.global_estimate.max_radius = *o.global_radius;
+    if (o.caustic_radius) s.caustic_estimate.max_radius = *o.caustic_radius;
+    try {
+        validate(s);
+    } catch (const std::invalid_argument& e) {
+        throw Error(g.at.known() ? g.at : desc.at, e.what());
+    }
+    return s;
+}
+
+namespace detail {
+
+template <Scalar S>
+Affine<S> to_affine(const Transform& t) {
+    Affine<S> a;
+    a.linear = glm::mat<3, 3, S, glm::defaultp>(t.linear);
+    a.translation = Vec3<S>(t.translation);
+    return a;
+}
+
+/// Rotation times uniform scale: returns the scale, or nothing.
+inline std::optional<double> similarity_scale(const glm::dmat3& m) {
+    const glm::dmat3 g = glm::transpose(m) * m;
+    const double s2 = g[0][0];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            if (std::abs(g[i][j] - (i == j ? s2 : 0.0)) > 1e-12 * s2) return std::nullopt;
+    return std::sqrt(s2);
+}
+
+/// Whether the map keeps boxes axis-aligned (each axis goes to an axis).
+inline bool keeps_axes(const glm::dmat3& m) {
+    for (int c = 0; c < 3; ++c) {
+        const double len = glm::length(m[c]);
+        int big = 0;
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(m[c][k]) > 1e-12 * len) ++big;
+        if (big != 1) return false;
+    }
+    return true;
+}
+
+template <Scalar S>
+class Builder {
+public:
+    Builder(const SceneDescription& desc, Warnings& warn) : desc_(desc), warn_(warn) {}
+
+    void add_all(DefaultScene<S>& scene) {
+        scene_ = &scene;
+        for (const Object& o : desc_.objects) add(o, Inherited{});
+        if (scene.lights().empty()) warn_(desc_.at, "the scene has no light_source: the image will be black");
+    }
+
+private:
+    struct Inherited {
+        const Texture* texture = nullptr;
+        const Interior* interior = nullptr;
+        const ObjectPhotons* photons = nullptr;
+        bool no_shadow = false;
+        Transform transform;
+    };
+
+    void add(const Object& o, const Inherited& parent) {
+        const Texture* inherited =
+            parent.texture ? parent.texture : (o.default_texture ? &*o.default_texture : nullptr);
+        Inherited mine{o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
+                       o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
+                       o.transform.then(parent.transform)};
+        if (const auto* l = std::get_if<LightSource>(&o.shape)) return add_light(*l, mine.transform, o.at);
+        if (const auto* u = std::get_if<UnionShape>(&o.shape)) {
+            for (const auto& child : u->children) add(*child, mine);
+            return;
+        }
+        try {
+            const MaterialId material = material_for(mine, o);
+            ObjectOptions options;
+            options.casts_shadow = !mine.no_shadow;
+            if (mine.photons) {
+                const ObjectPhotons& ph = *mine.photons;
+                options.caustic_target = ph.target ? CausticTarget::on : CausticTarget::off;
+                if (ph.target && (ph.reflection == false || ph.refraction == false))
+                    warn_(ph.at,
+                          "photons `reflection off` / `refraction off` are ignored: photon follows every caustic "
+                          "photon path of a target");
+                if (ph.collect == false && scene_->materials()[material].has_diffuse())
+                    warn_(ph.at, "photons `collect off` is ignored: photon stores photons on every diffuse surface");
+                if (ph.pass_through) warn_(ph.at, "photons `pass_through` is ignored by photon");
+            }
+            const Transform& t = mine.transform;
+            std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
+        } catch (const std::invalid_argument& e) {
+            throw Error(o.at, e.what());
+        }
+    }
+
+    void add_shape(const SphereShape& s, const Transform& t, MaterialId m, ObjectOptions opt) {
+        if (const auto scale = similarity_scale(t.linear))
+            scene_->add(Sphere<S>(Vec3<S>(t.point(s.center)), S(s.radius * *scale)), m, opt);
+        else
+            scene_->add(Transformed<Sphere<S>>(Sphere<S>(Vec3<S>(s.center), S(s.radius)), to_affine<S>(t)), m, opt);
+    }
+    void add_shape(const BoxShape& b, const Transform& t, MaterialId m, ObjectOptions opt) {
+        if (keeps_axes(t.linear))
+            scene_->add(Box<S>(Vec3<S>(t.point(b.corner1)), Vec3<S>(t.point(b.corner2))), m, opt);
+        else
+            scene_->add(Transformed<Box<S>>(Box<S>(Vec3<S>(b.corner1), Vec3<S>(b.corner2)), to_affine<S>(t)), m, opt);
+    }
+    void add_shape(const PlaneShape& p, const Transform& t, MaterialId m, ObjectOptions opt) {
+        const Vector3 n = glm::normalize(p.normal);
+        const Vector3 world_n = glm::normalize(glm::transpose(glm::inverse(t.linear)) * n);
+        const Vector3 point = t.point(n * p.distance);
+        scene_->add(Plane<S>(Vec3<S>(world_n), S(glm::dot(point, world_n))), m, opt);
+    }
+    void add_shape(const TriangleShape& tri, const Transform& t, MaterialId m, ObjectOptions opt) {
+        scene_->add(Triangle<S>(Vec3<S>(t.point(tri.vertices[0])), Vec3<S>(t.point(tri.vertices[1])),
+                                Vec3<S>(t.point(tri.vertices[2]))),
+                    m, opt);
+    }
+    void add_shape(const MeshShape& mesh, const Transform& t, MaterialId m, ObjectOptions opt) {
+        std::vector<Vec3<S>> positions;
+        std::vector<typename TriangleMesh<S>::Index> indices;
+        positions.reserve(mesh.triangles->size() * 3);
+        indices.reserve(mesh.triangles->size());
+        for (const auto& tri : *mesh.triangles) {
+            const auto base = std::uint32_t(positions.size());
+            for (const Vector3& v : tri) positions.push_back(Vec3<S>(t.point(v)));
+            indices.push_back({base, base + 1, base + 2});
+        }
+        scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices)), m, opt);
+    }
+    void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
+    void add_shape(const LightSource&, const Transform&, MaterialId, ObjectOptions) {}
+
+    MaterialId material_for(const Inherited& in, const Object& o) {
+        static const Texture pov_default{};
+        const Texture& tex = in.texture ? *in.texture : pov_default;
+        const MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, warn_, o.at);
+        for (const auto& [params, id] : materials_)
+            if (same(params, p)) return id;
+        const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
+        try {
+            const MaterialId id = scene_->add_material(Material<S>(p));
+            materials_.emplace_back(p, id);
+            return id;
+        } catch (const std::invalid_argument& e) {
+            throw Error(at, e.what());
+        }
+    }
+    static bool same(const MaterialParams<S>& a, const MaterialParams<S>& b) {
+        return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
+               a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent;
+    }
+
+    void add_light(const LightSource& l, const Transform& t, const SourceLocation& at) {
+        constexpr double pi_d = 3.14159265358979323846;
+        const auto item = [&](const char* k) {
+            const auto it = l.written.find(k);
+            return it != l.written.end() ? it->second : l.at;
+        };
+        const Vector3 position = t.point(l.position);
+        const Vector3 intensity = radiant_intensity(l, &warn_);
+        try {
+            std::optional<Cone<S>> cone;
+            if (l.spotlight) {
+                const Spotlight& sp = *l.spotlight;
+                const Vector3 axis = t.point(sp.point_at) - position;
+                if (glm::length(axis) == 0.0)
+                    throw Error(item("point_at"), "spotlight point_at equals the light's position");
+                double half = sp.radius;
+                if (sp.radius != sp.falloff || sp.tightness != 0) {
+                    half = 0.5 * (sp.radius + std::max(sp.falloff, sp.radius));
+                    warn_(sp.at.known() ? sp.at : l.at,
+                          "photon's spotlight has a sharp edge: it emits into a cone of half-angle " +
+                              format_number(half) +
+                              " degrees (between `radius` and `falloff`), without POV-Ray's soft edge and `tightness`. "
+                              "Write `radius A falloff A tightness 0` for an exact cone");
+                }
+                if (!(half > 0))
+                    throw Error(item("radius"), "spotlight `radius` and `falloff` must be above 0 degrees");
+                cone.emplace(Vec3<S>(axis), S(half));
+            }
+            const S solid_angle = cone ? cone->solid_angle() : S(4) * pi<S>;
+            const Rgb<S> power = Rgb<S>(intensity) * solid_angle;
+            double radius = 0;
+            if (l.area && l.area->size1 * l.area->size2 > 1) {
+                const AreaLight& a = *l.area;
+                const double l1 = glm::length(t.vector(a.axis1)), l2 = glm::length(t.vector(a.axis2));
+                if (a.circular && a.orient && std::abs(l1 - l2) <= 1e-9 * std::max(l1, l2)) {
+                    radius = 0.5 * l1;
+                } else {
+                    radius = a.circular ? 0.5 * std::sqrt(l1 * l2) : std::sqrt(l1 * l2 / pi_d);
+                    warn_(a.at,
+                          "photon's area lights are spheres: this `area_light` (without `circular orient` and "
+                          "equal axes) becomes a sphere light of radius " +
+                              format_number(radius) + " (same area)");
+                }
+            }
+            if (radius > 0)
+                scene_->add_light(SphereLight<S>{Vec3<S>(position), S(radius), power, cone});
+            else
+                scene_->add_light(PointLight<S>{Vec3<S>(position), power, cone});
+        } catch (const std::invalid_argument& e) {
+            throw Error(at, e.what());
+        }
+        if (l.shadowless) warn_(item("shadowless"), "`shadowless` is ignored: photon's lights always cast shadows");
+        if (l.looks_like)
+            warn_(item("looks_like"),
+                  "`looks_like` is ignored: photon's lights are invisible, as POV-Ray's without it");
+        if (!l.photon_reflection || !l.photon_refraction)
+            warn_(item("photons"),
+                  "light photons `reflection off` / `refraction off` are ignored: photon traces every "
+                  "photon path");
+    }
+
+    const SceneDescription& desc_;
+    Warnings& warn_;
+    DefaultScene<S>* scene_ = nullptr;
+    std::vector<std::pair<MaterialParams<S>, MaterialId>> materials_;
+};
+
+}  // namespace detail
+
+/// The library's scene, camera and render settings for `desc`. Throws dsl::Error with the
+/// location of the offending value.
+template <Scalar S>
+[[nodiscard]] BuiltScene<S> build(const SceneDescription& desc, const BuildOptions& options = {}) {
+    Warnings warn(options.diagnostics);
+    RenderSettings settings = render_settings(desc, options.overrides, warn);
+    CameraDescription cam;
+    if (desc.camera)
+        cam = *desc.camera;
+    else
+        warn(desc.at, "no camera: using POV-Ray's default camera at the origin looking along +z");
+    const ResolvedCamera rc = resolve_camera(cam, double(settings.width) / double(settings.height));
+    std::optional<PinholeCamera<S>> camera;
+    try {
+        camera.emplace(Vec3<S>(rc.location), Vec3<S>(rc.direction), Vec3<S>(rc.right), Vec3<S>(rc.up));
+    } catch (const std::invalid_argument& e) {
+        throw Error(cam.at.known() ? cam.at : desc.at, e.what());
+    }
+    DefaultScene<S> scene;
+    detail::Builder<S>(desc, warn).add_all(scene);
+    scene.commit();
+    return BuiltScene<S>{std::move(scene), *camera, std::move(settings)};
+}
+
+}  // namespace photon::dsl

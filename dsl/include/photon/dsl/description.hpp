@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// What a scene file says, after POV-Ray's evaluation (#declare, #include, #if, expressions) and
+// before any library object exists: camera, lights, objects with their textures, interiors,
+// photon options and transforms, and the global settings. Values keep POV-Ray's meaning (a light
+// colour is POV-Ray's brightness, a finish is POV-Ray's finish); build.hpp translates them.
+// Every part carries the location it was written at, for messages.
+
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "diagnostics.hpp"
+
+namespace photon::dsl {
+
+using Vector3 = glm::dvec3;
+
+/// POV-Ray colour: red, green, blue, filter (transparency tinted by the colour) and transmit
+/// (untinted transparency).
+struct Color {
+    Vector3 rgb{0.0};
+    double filter = 0, transmit = 0;
+
+    friend bool operator==(const Color&, const Color&) = default;
+};
+
+/// Affine map x' = linear x + translation (column vectors). POV-Ray's transformations compose
+/// in the order written: `a.then(b)` applies a, then b.
+struct Transform {
+    glm::dmat3 linear{1.0};
+    Vector3 translation{0.0};
+
+    [[nodiscard]] static Transform translate(const Vector3& t) {
+        Transform r;
+        r.translation = t;
+        return r;
+    }
+    [[nodiscard]] static Transform scale(const Vector3& s) {
+        Transform r;
+        r.linear[0][0] = s.x, r.linear[1][1] = s.y, r.linear[2][2] = s.z;
+        return r;
+    }
+    /// POV-Ray's `rotate <a, b, c>`: about x by a degrees, then y by b, then z by c. Each is the
+    /// usual right-handed rotation matrix (rotate <0,90,0> takes +x to -z).
+    [[nodiscard]] static Transform rotate(const Vector3& degrees) {
+        auto axis = [](int a, double deg) {
+            const double r = deg * 3.14159265358979323846 / 180.0, c = std::cos(r), s = std::sin(r);
+            Transform t;
+            const int i = (a + 1) % 3, j = (a + 2) % 3;  // rotation in the (i, j) plane
+            t.linear[i][i] = c, t.linear[i][j] = s;      // column i is the image of axis i
+            t.linear[j][i] = -s, t.linear[j][j] = c;
+            return t;
+        };
+        return axis(0, degrees.x).then(axis(1, degrees.y)).then(axis(2, degrees.z));
+    }
+    /// POV-Ray's `matrix <m00, m01, m02, m10, ..., m32>` (row vectors: p' = p M, last row the
+    /// translation).
+    [[nodiscard]] static Transform matrix(const std::array<double, 12>& m) {
+        Transform r;
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) r.linear[c][k] = m[std::size_t(3 * c + k)];
+        r.translation = {m[9], m[10], m[11]};
+        return r;
+    }
+    /// The 12 numbers of POV-Ray's `matrix` for this transform.
+    [[nodiscard]] std::array<double, 12> pov_matrix() const {
+        std::array<double, 12> m{};
+        for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 3; ++k) m[std::size_t(3 * c + k)] = linear[c][k];
+        m[9] = translation.x, m[10] = translation.y, m[11] = translation.z;
+        return m;
+    }
+
+    [[nodiscard]] Transform then(const Transform& next) const {
+        return {next.linear * linear, next.linear * translation + next.translation};
+    }
+    [[nodiscard]] Transform inverse() const {
+        const glm::dmat3 inv = glm::inverse(linear);
+        return {inv, -(inv * translation)};
+    }
+    [[nodiscard]] Vector3 point(const Vector3& p) const { return linear * p + translation; }
+    [[nodiscard]] Vector3 vector(const Vector3& v) const { return linear * v; }
+    [[nodiscard]] bool is_identity() const { return linear == glm::dmat3(1.0) && translation == Vector3(0.0); }
+
+    friend bool operator==(const Transform&, const Transform&) = default;
+};
+
+struct Pigment {
+    Color color;  ///< POV-Ray's default pigment is black
+    SourceLocation at;
+};
+
+/// `reflection COLOR` or `reflection { [MIN,] MAX [fresnel on] ... }`.
+struct Reflection {
+    Vector3 min{0.0}, max{0.0};
+    bool variable = false;  ///< a MIN was given (reflectance varies with the angle)
+    bool fresnel = false;
+    double falloff = 1, exponent = 1, metallic = 0;
+    SourceLocation at;
+};
+
+/// POV-Ray's finish with its defaults. `written` records the items written, with where.
+struct Finish {
+    Vector3 ambient{0.1};
+    double diffuse = 0.6, diffuse_back = 0;
+    double brilliance = 1;
+    double specular = 0, roughness = 0.05;
+    double phong = 0, phong_size = 40;
+    double metallic = 0;
+    std::optional<Reflection> reflection;
+    bool conserve_energy = false;
+    Vector3 emission{0.0};
+    std::map<std::string, SourceLocation> written;
+    SourceLocation at;
+};
+
+struct Interior {
+    double ior = 1;
+    std::map<std::string, SourceLocation> written;
+    SourceLocation at;
+};
+
+struct Texture {
+    Pigment pigment;
+    Finish finish;
+    std::map<std::string, SourceLocation> ignored;  ///< parts photon does not render (normal, ...)
+    SourceLocation at;
+};
+
+/// An object's `photons { }` block (POV-Ray's photon options).
+struct ObjectPhotons {
+    bool target = false;
+    double spacing_multiplier = 1;
+    std::optional<bool> reflection, refraction, collect;
+    bool pass_through = false;
+    SourceLocation at;
+};
+
+struct AreaLight {
+    Vector3 axis1{0.0}, axis2{0.0};
+    int size1 = 1, size2 = 1;
+    int adaptive = 0;
+    bool jitter = false, circular = false, orient = false;
+    SourceLocation at;
+};
+
+struct Spotlight {
+    double radius = 30, falloff = 45, tightness = 0;  ///< half-angles in degrees
+    Vector3 point_at{0, 0, 1};
+    SourceLocation at;
+};
+
+/// A `light_source` as POV-Ray reads it: its colour is POV-Ray's brightness, not watts.
+struct LightSource {
+    Vector3 position{0.0};
+    Color color;
+    std::optional<Spotlight> spotlight;
+    std::optional<AreaLight> area;
+    double fade_distance = 0, fade_power = 0;
+    bool shadowless = false, looks_like = false;
+    /// The light's `photons { }` block: POV-Ray shoots reflected and refracted photons by default.
+    bool photon_reflection = true, photon_refraction = true, photon_area_light = false;
+    std::map<std::string, SourceLocation> written;
+    SourceLocation at;
+};
+
+struct Object;
+
+struct SphereShape {
+    Vector3 center{0.0};
+    double radius = 1;
+};
+struct BoxShape {
+    Vector3 corner1{0.0}, corner2{0.0};
+};
+/// The surface dot(p, normal / |normal|) = distance.
+struct PlaneShape {
+    Vector3 normal{0, 1, 0};
+    double distance = 0;
+};
+struct TriangleShape {
+    std::array<Vector3, 3> vertices{};
+};
+struct MeshShape {
+    std::shared_ptr<const std::vector<std::array<Vector3, 3>>> triangles;
+};
+/// `union` (or `merge`): the children, each with its own modifiers. Children are shared, not
+/// copied, when a declared object is used again (`object { Name }`), so repeated use stays cheap.
+struct UnionShape {
+    std::vector<std::shared_ptr<const Object>> children;
+    bool merge = false;
+};
+
+using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource>;
+
+/// One object statement with its modifiers. Modifiers missing here come from the enclosing
+/// union (texture, interior, photons) when there is one.
+struct Object {
+    Shape shape;
+    std::optional<Texture> texture;
+    std::optional<Interior> interior;
+    std::optional<ObjectPhotons> photons;
+    bool no_shadow = false;
+    Transform transform;         ///< applied to the shape (and to every child of a union)
+    std::size_t primitives = 1;  ///< shapes and triangles below this object, for the size bound
+    /// Texture for the parts that have none, here or in an enclosing union: the `#default`
+    /// texture when this top-level statement ended (POV-Ray's rule).
+    std::optional<Texture> default_texture;
+    std::map<std::string, SourceLocation> ignored;  ///< modifiers photon does not use (no_image, ...)
+    SourceLocation at;
+};
+
+/// POV-Ray's keyword for the shape of an object (`sphere`, `union`, `light_source`, ...).
+[[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
+    constexpr const char* names[] = {"sphere", "box", "plane", "triangle", "mesh", "union", "light_source"};
+    if (s.index() == 5 && std::get<UnionShape>(s).merge) return "merge";
+    return names[s.index()];
+}
+
+/// A camera as written; build.hpp resolves it in POV-Ray's order (see resolve_camera).
+struct CameraDescription {
+    Vector3 location{0.0}, direction{0, 0, 1}, up{0, 1, 0}, sky{0, 1, 0};
+    std::optional<Vector3> right;  ///< default <image width / image height, 0, 0>
+    std::optional<Vector3> look_at;
+    std::optional<double> angle;  ///< horizontal field of view in degrees
+    Transform transform;
+    std::map<std::string, SourceLocation> written;
+    SourceLocation at;
+};
+
+/// A density estimate as written in photon's own settings.
+struct EstimateDescription {
+    std::optional<unsigned> count;
+    std::optional<double> radius, flatten;
+    std::optional<unsigned> probes;
+};
+
+/// POV-Ray's `global_settings { photons { } }` (its caustic photons).
+struct PovPhotons {
+    std::optional<std::uint64_t> count;
+    std::optional<double> spacing;
+    std::optional<unsigned> gather_min, gather_max;
+    std::optional<double> radius;
+    std::optional<unsigned> max_trace_level;
+    std::map<std::string, SourceLocation> ignored;
+    SourceLocation at;
+};
+
+/// photon's own settings: global_settings items POV-Ray does not know, written inside
+/// `#ifdef (photon_version) ... #end` so that POV-Ray skips them.
+struct PhotonSettings {
+    std::optional<unsigned> width, height;
+    std::optional<std::string> render_mode;  ///< rt, pm or pm_direct
+    std::optional<std::uint64_t> global_photons, caustic_photons;
+    EstimateDescription global_estimate, caustic_estimate;
+    std::optional<unsigned> max_photon_depth, final_gather, shadow_samples, samples_per_pixel, irradiance_stride;
+    std::optional<std::uint64_t> seed;
+};
+
+struct GlobalSettings {
+    std::optional<double> assumed_gamma;
+    Vector3 ambient_light{1.0};
+    std::optional<unsigned> max_trace_level;
+    std::optional<double> adc_bailout;
+    bool radiosity = false;
+    std::optional<PovPhotons> photons;
+    PhotonSettings photon;
+    std::map<std::string, SourceLocation> written;  ///< every item, photon's own ones included
+    SourceLocation at;
+};
+
+/// A whole scene file, evaluated.
+struct SceneDescription {
+    std::optional<double> version;  ///< from `#version`
+    std::optional<CameraDescription> camera;
+    std::vector<Object> objects;  ///< top-level statements, lights included, in file order
+    GlobalSettings settings;
+    std::vector<std::shared_ptr<const SourceFile>> files;  ///< the scene file and every include, in reading order
+    SourceLocation at;                                     ///< the start of the scene file
+};
+
+}  // namespace photon::dsl

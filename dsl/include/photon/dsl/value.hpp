@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Values of POV-Ray's expressions and declarations: numbers, vectors and colours (one numeric
+// type of 0 to 5 components, as POV-Ray promotes between them), strings, and the declarable
+// blocks (pigment, finish, interior, texture, transform, object, camera).
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <variant>
+
+#include "description.hpp"
+
+namespace photon::dsl {
+
+/// A float (dim 0) or a vector of 2 to 5 components; colours are 5-component vectors (red,
+/// green, blue, filter, transmit) flagged `color`.
+struct Numeric {
+    std::array<double, 5> c{};
+    int dim = 0;
+    bool color = false;
+
+    [[nodiscard]] static Numeric scalar(double v) {
+        Numeric n;
+        n.c[0] = v;
+        return n;
+    }
+    [[nodiscard]] static Numeric vector(const Vector3& v) {
+        Numeric n;
+        n.c = {v.x, v.y, v.z, 0, 0};
+        n.dim = 3;
+        return n;
+    }
+    [[nodiscard]] static Numeric from_color(const Color& col) {
+        Numeric n;
+        n.c = {col.rgb.x, col.rgb.y, col.rgb.z, col.filter, col.transmit};
+        n.dim = 5;
+        n.color = true;
+        return n;
+    }
+    [[nodiscard]] bool is_float() const noexcept { return dim == 0; }
+    /// Component i as POV-Ray promotes: a float fills every component, a short vector pads with 0.
+    [[nodiscard]] double at(int i) const noexcept { return dim == 0 ? c[0] : (i < dim ? c[std::size_t(i)] : 0.0); }
+    [[nodiscard]] bool finite() const noexcept {
+        for (int i = 0; i < (dim == 0 ? 1 : dim); ++i)
+            if (!std::isfinite(c[std::size_t(i)])) return false;
+        return true;
+    }
+};
+
+/// Shortest text that reads back as the same double.
+[[nodiscard]] inline std::string format_number(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+[[nodiscard]] inline std::string describe(const Numeric& n) {
+    if (n.dim == 0) return "the number " + format_number(n.c[0]);
+    std::string s = n.color ? "the colour <" : "the vector <";
+    for (int i = 0; i < n.dim; ++i) s += (i ? ", " : "") + format_number(n.c[std::size_t(i)]);
+    return s + ">";
+}
+
+using ValueData =
+    std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object, CameraDescription>;
+
+/// A declared identifier's value and where it was declared.
+struct Value {
+    ValueData data;
+    SourceLocation at;
+};
+
+/// "a texture", "an object", ... for messages.
+[[nodiscard]] inline std::string type_name(const ValueData& v) {
+    switch (v.index()) {
+        case 0: {
+            const auto& n = std::get<Numeric>(v);
+            return n.dim == 0 ? "a number" : (n.color ? "a colour" : "a vector");
+        }
+        case 1:
+            return "a string";
+        case 2:
+            return "a pigment";
+        case 3:
+            return "a finish";
+        case 4:
+            return "an interior";
+        case 5:
+            return "a texture";
+        case 6:
+            return "a transform";
+        case 7:
+            return std::holds_alternative<LightSource>(std::get<Object>(v).shape) ? "a light_source" : "an object";
+        default:
+            return "a camera";
+    }
+}
+
+}  // namespace photon::dsl

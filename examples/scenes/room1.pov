@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// The paper's room 1: a closed white room (interior [-2,2] x [0,2.5] x [-2,2], 0.02 m walls) with a
+// window in the back wall, lit only by a spherical light outside, behind and above the back wall
+// (the sun): a patch of sunlight on the floor and the lower left wall, everything else lit
+// indirectly. A red cabinet, a blue ball in the shade and a glass ball in the sunlit patch. The
+// ground slab is both the floor inside and the sunlit ground outside, 0.02 m apart across each wall
+// (the paper's light-leak case). Units: metres, watts.
+//   photon render examples/scenes/room1.pov -o room1.png
+//   povray -D +W800 +H600 +A0.3 +AM2 +R3 +HIexamples/scenes/povray/radphot_hq.inc +FE +Oroom1.exr examples/scenes/room1.pov
+
+#version 3.7;
+
+global_settings {
+  assumed_gamma 1.0
+  ambient_light rgb 0
+  max_trace_level 4
+}
+
+// photon's own settings (docs/scene-language.md); POV-Ray skips this block. The light is
+// outside, so most photons land on the ground around the house: the room needs many more global
+// photons than the Cornell box (the paper used 2,000,000).
+#ifdef (photon_version)
+global_settings {
+  width 800 height 600
+  render_mode pm
+  global_photons 2000000
+  caustic_photons 200000
+  global_estimate { count 100 radius 0.25 }
+  caustic_estimate { count 60 radius 0.05 }
+  max_photon_depth 10
+  final_gather 16
+  shadow_samples 16
+  samples_per_pixel 4
+}
+#end
+
+// The sun: radius 0.2 m, 1000 W/sr per channel (power 12566 W); colour rule as in cornell.pov.
+#declare Light_Intensity = 1000;
+#declare Light_Radius = 0.2;
+#declare Fade_D = 0.001;
+
+camera {  // inside, near the front-right corner
+  location <1.6, 1.3, -1.8>
+  look_at <-0.6, 0.7, 1.5>
+  up y
+  right x*4/3
+  angle 75                // horizontal field of view
+}
+
+light_source {
+  <2.5, 4, 5>, rgb Light_Intensity / (2*pi*Fade_D*Fade_D)
+  area_light <2*Light_Radius, 0, 0>, <0, 0, 2*Light_Radius>, 9, 9 circular orient jitter
+  fade_distance Fade_D fade_power 2
+  photons { refraction on reflection on }
+}
+
+#declare White = texture { pigment { rgb <0.75, 0.75, 0.75> } finish { ambient 0 diffuse 1 } }
+#declare Red   = texture { pigment { rgb <0.75, 0.25, 0.25> } finish { ambient 0 diffuse 1 } }
+#declare Green = texture { pigment { rgb <0.25, 0.75, 0.25> } finish { ambient 0 diffuse 1 } }
+#declare Blue  = texture { pigment { rgb <0.25, 0.25, 0.75> } finish { ambient 0 diffuse 1 } }
+#declare Glass = texture {
+  pigment { rgbf <1, 1, 1, 1> }
+  finish { ambient 0 diffuse 0 reflection { 0, 1 fresnel on } conserve_energy }
+}
+#declare Glass_Interior = interior { ior 1.5 }
+
+box { <-20, -0.02, -20>, <20, 0, 20> texture { White } }  // the ground, inside and out
+
+union {  // the room's shell; the walls stand on the ground
+  box { <-2.02, 0, -2.02>, <-2, 2.52, 2.02> }     // left
+  box { <2, 0, -2.02>, <2.02, 2.52, 2.02> }       // right
+  box { <-2.02, 0, -2.02>, <2.02, 2.52, -2> }     // front, behind the camera
+  box { <-2.02, 2.5, -2.02>, <2.02, 2.52, 2.02> } // ceiling
+  // The back wall around the window opening x in [-0.8, 0.8], y in [0.9, 1.9].
+  box { <-2.02, 0, 2>, <2.02, 0.9, 2.02> }        // below the window
+  box { <-2.02, 1.9, 2>, <2.02, 2.52, 2.02> }     // above
+  box { <-2.02, 0.9, 2>, <-0.8, 1.9, 2.02> }      // left of it
+  box { <0.8, 0.9, 2>, <2.02, 1.9, 2.02> }        // right of it
+  texture { White }
+}
+
+box { <-1.9, 0, 0.3>, <-1.3, 0.9, 1.5> texture { Red } }     // cabinet
+sphere { <0.9, 0.35, 0.9>, 0.35 texture { Blue } }           // in the shade
+sphere {  // in the sunlit patch: a caustic inside its own shadow
+  <-0.9, 0.3, 0.3>, 0.3
+  texture { Glass }
+  interior { Glass_Interior }
+  photons { target reflection on refraction on collect off }
+}

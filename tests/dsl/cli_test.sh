@@ -1,0 +1,88 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# The `photon` program end to end: help and usage errors, check, render, export-pov, errors with
+# exit status 1, the output path checked before rendering, --strict, and Ctrl-C writing a partial
+# image (marked photon:partial=true) without replacing a finished one, exit status 130.
+#   cli_test.sh PHOTON SCENES_DIR WORKDIR
+photon=$1 scenes=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" || exit 1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect() {  # expect STATUS COMMAND...: run and compare the exit status
+    want=$1; shift
+    "$@" >"$work/out" 2>"$work/err"; got=$?
+    [ "$got" -eq "$want" ] || { fail "exit status $got, expected $want: $*"; cat "$work/err"; }
+}
+tiny="--width 40 --height 30 --global-photons 2000 --caustic-photons 1000 --spp 1 --shadow-samples 1 --final-gather 4"
+
+expect 0 "$photon" --help
+grep -q "render" "$work/out" || fail "--help does not mention render"
+expect 0 "$photon" render --help
+grep -q -- "--global-photons" "$work/out" || fail "render --help does not list --global-photons"
+expect 2 "$photon"
+expect 2 "$photon" render "$scenes/cornell.pov"
+expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/x.png" --mode fast
+
+for s in cornell recursive room1 room2; do
+    expect 0 "$photon" check "$scenes/$s.pov"
+    grep -q "^warnings   0" "$work/out" || fail "check $s: warnings"
+done
+grep -q "sphere light at <2.5, 4, 5>, radius 0.2, power 12566.4 W, intensity 1000 W/sr" "$work/out" || fail "check room2: light"
+
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/cornell.png" $tiny
+[ -s "$work/cornell.png" ] || fail "no cornell.png"
+grep -q "global map" "$work/out" || fail "no statistics table"
+expect 0 "$photon" render "$scenes/room1.pov" -o "$work/room1.exr" $tiny --mode rt -q
+[ -s "$work/room1.exr" ] || fail "no room1.exr"
+[ -s "$work/out" ] && fail "-q printed something"
+
+printf 'sphere { <0,0,0>, -1 }\n' >"$work/bad.pov"
+expect 1 "$photon" render "$work/bad.pov" -o "$work/bad.png"
+grep -q "bad.pov:1:19: error: sphere radius must be positive, found -1" "$work/err" || fail "error message"
+[ -e "$work/bad.png" ] && fail "an image was written for a bad scene"
+
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/no/such/dir/x.png" $tiny
+grep -q "does not exist" "$work/err" || fail "unwritable output not reported"
+grep -q "rendering" "$work/err" && fail "rendered before checking the output path"
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/x.unknownformat" $tiny
+
+printf 'light_source { <0, 5, 0>, rgb 1 }\nsphere { 0, 1 }\n' >"$work/warn.pov"
+expect 0 "$photon" check "$work/warn.pov"
+grep -q "warning: light_source without" "$work/err" || fail "warning not printed"
+expect 1 "$photon" check --strict "$work/warn.pov"
+
+printf '#if (Size > 1) sphere { 0, Size } #end\ncamera { location -5 look_at 0 }\n' >"$work/define.pov"
+expect 0 "$photon" check "$work/define.pov" -D Size=2
+expect 0 "$photon" check -D Size=2 -D Other=1 "$work/define.pov"
+expect 1 "$photon" check "$work/define.pov"
+grep -q "undefined identifier \`Size\`" "$work/err" || fail "-D missing not reported"
+
+expect 0 "$photon" export-pov "$scenes/recursive.pov" -o "$work/flat.pov"
+expect 0 "$photon" check "$work/flat.pov"
+grep -q "10: 7 box, 2 sphere, 1 transformed box" "$work/out" || fail "exported scene differs"
+if command -v povray >/dev/null 2>&1; then
+    (cd "$work" && povray -D +W16 +H12 +O"$work/flat.png" "$work/flat.pov" >"$work/povray.log" 2>&1) ||
+        { fail "povray cannot read the exported file"; tail -5 "$work/povray.log"; }
+    grep -q "Parse Warning" "$work/povray.log" && fail "povray warns on the exported file"
+fi
+
+# Ctrl-C: the first image is finished; an interrupted render of the same path goes next to it.
+cp "$work/cornell.png" "$work/keep.png"
+"$photon" render "$scenes/cornell.pov" -o "$work/cornell.png" --mode rt --width 1600 --height 1200 --spp 16 \
+    >"$work/out" 2>"$work/err" &
+pid=$!
+sleep 1.5
+kill -INT $pid
+wait $pid
+status=$?
+[ $status -eq 130 ] || { fail "interrupted render: exit status $status, expected 130"; cat "$work/err"; }
+cmp -s "$work/cornell.png" "$work/keep.png" || fail "the finished image was replaced by a partial one"
+[ -s "$work/cornell.partial.png" ] || fail "no cornell.partial.png"
+grep -q "PARTIAL" "$work/err" || fail "partial image not reported"
+if command -v oiiotool >/dev/null 2>&1; then
+    oiiotool --info -v "$work/cornell.partial.png" | grep -q 'photon:partial: "true"' || fail "no photon:partial=true metadata"
+    oiiotool --info -v "$work/cornell.png" | grep -q 'photon:partial: "false"' || fail "finished image not marked photon:partial=false"
+fi
+
+[ $failures -eq 0 ] && echo "all photon command-line checks passed"
+exit $failures
