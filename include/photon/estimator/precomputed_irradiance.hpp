@@ -5,6 +5,7 @@
 // surface normal there. A final-gather ray then costs one nearest-neighbour lookup instead of a
 // k-nearest density estimate.
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,16 +45,30 @@ public:
     [[nodiscard]] std::size_t memory_bytes() const noexcept { return tree_.memory_bytes(); }
 
     /// Irradiance of the nearest sample within `max_radius` whose normal is within about 25
-    /// degrees of `n` (a sample on another surface, such as the far side of a thin wall or a
-    /// perpendicular wall at a corner, does not count); zero if there is none.
+    /// degrees of `n` and that `visible(sample_position, sample_normal)` accepts, among the
+    /// `candidates` nearest such samples; zero if there is none. The normal test rejects samples
+    /// on other surfaces (the far face of a thin wall, a perpendicular wall at a corner); the
+    /// visibility test rejects samples on the same plane behind a wall standing on it.
+    template <class Visible>
     [[nodiscard]] Rgb<float> lookup(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
-                                    std::vector<Neighbor<float>>& buffer) const {
+                                    std::vector<Neighbor<float>>& buffer, Visible&& visible,
+                                    unsigned candidates = 4) const {
         if (tree_.empty()) return Rgb<float>(0.0f);
-        const auto found = tree_.k_nearest(x, 1, max_radius, buffer, [&](std::uint32_t i, float) {
+        auto found = tree_.k_nearest(x, candidates, max_radius, buffer, [&](std::uint32_t i, float) {
             return glm::dot(decode_octahedral(tree_.payload(i).normal), n) > 0.9f;
         });
-        if (found.neighbors.empty()) return Rgb<float>(0.0f);
-        return tree_.payload(found.neighbors[0].index).irradiance;
+        std::sort(buffer.begin(), buffer.begin() + std::ptrdiff_t(found.neighbors.size()),
+                  [](const Neighbor<float>& a, const Neighbor<float>& b) { return a.distance2 < b.distance2; });
+        for (const Neighbor<float>& c : found.neighbors) {
+            const IrradiancePayload& p = tree_.payload(c.index);
+            if (visible(tree_.position(c.index), decode_octahedral(p.normal))) return p.irradiance;
+        }
+        return Rgb<float>(0.0f);
+    }
+    /// Irradiance of the nearest matching sample, without a visibility test.
+    [[nodiscard]] Rgb<float> lookup(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
+                                    std::vector<Neighbor<float>>& buffer) const {
+        return lookup(x, n, max_radius, buffer, [](const Vec3<float>&, const Vec3<float>&) { return true; }, 1);
     }
 
 private:

@@ -22,6 +22,14 @@ template <Scalar S>
     return S(64) * std::numeric_limits<S>::epsilon() * magnitude + std::numeric_limits<S>::min();
 }
 
+/// Bound for a point stored in single precision (photon positions) used in a scene of scalar S:
+/// the larger of S's intersection error and float's rounding of the point.
+template <Scalar S>
+[[nodiscard]] inline S stored_point_error(const Vec3<S>& p, const Vec3<S>& origin) noexcept {
+    const float stored = intersection_error(Vec3<float>(p), Vec3<float>(origin));
+    return std::max(intersection_error(p, origin), S(stored));
+}
+
 /// Origin for a ray leaving `p` on the side of `side_normal` (a unit normal oriented towards
 /// where the new ray goes).
 template <Scalar S>

@@ -133,16 +133,27 @@ private:
         Rgb<S> result(S(0));
         if (material.has_diffuse()) {
             const Vec3<S> above = offset_origin(surface->hit.point, f.normal, error);
-            const Rgb<S> irradiance =
-                maps_.irradiance
-                    ? Rgb<S>(maps_.irradiance->lookup(Vec3<float>(above), Vec3<float>(f.normal),
-                                                      settings_.global_estimate.max_radius, ctx.nearest))
-                    : map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx);
+            const Rgb<S> irradiance = maps_.irradiance ? precomputed_irradiance(above, f.normal, ctx)
+                                                       : map_irradiance(maps_.global, settings_.global_estimate,
+                                                                        above, f.normal, ctx);
             result += material.diffuse() * inv_pi<S> * irradiance;
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, true);
         return result;
+    }
+
+    /// Precomputed irradiance at a gather hit: the nearest sample on the same surface that x can
+    /// see (a short shadow ray keeps samples behind a thin wall out).
+    [[nodiscard]] Rgb<S> precomputed_irradiance(const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
+        const auto visible = [&](const Vec3<float>& sample, const Vec3<float>& sample_normal) {
+            const Vec3<S> p(sample);
+            const Vec3<S> end = offset_origin(p, Vec3<S>(sample_normal), stored_point_error(p, x));
+            ++ctx.rays.probe;
+            return !scene_.occluded(Ray<S>{x, end - x, S(1)});
+        };
+        return Rgb<S>(maps_.irradiance->lookup(Vec3<float>(x), Vec3<float>(n), settings_.global_estimate.max_radius,
+                                               ctx.nearest, visible));
     }
 
     const SceneT& scene_;

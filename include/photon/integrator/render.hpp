@@ -41,7 +41,7 @@ template <class SceneT>
 [[nodiscard]] PrecomputedIrradiance precompute_irradiance(const SceneT& scene, const PhotonMap& global,
                                                           std::span<const Photon> photons,
                                                           std::span<const std::uint16_t> normals,
-                                                          const RenderSettings& settings) {
+                                                          const RenderSettings& settings, RayCounts& rays) {
     using S = typename SceneT::scalar_type;
     const std::size_t stride = settings.irradiance_stride;
     std::vector<IrradianceSample> samples((photons.size() + stride - 1) / stride);
@@ -55,7 +55,7 @@ template <class SceneT>
         for (std::size_t i = b; i < e; ++i) {
             const Photon& p = photons[i * stride];
             const Vec3<S> n(decode_octahedral(normals[i * stride]));
-            const Vec3<S> x = offset_origin(Vec3<S>(p.position), n, intersection_error(Vec3<S>(p.position), scene_scale));
+            const Vec3<S> x = offset_origin(Vec3<S>(p.position), n, stored_point_error(Vec3<S>(p.position), scene_scale));
             Rgb<S> e_x;
             if (es.boundary_probes > 0) {
                 const VisibleDisc disc = probe_visible_disc(scene, x, n, es.max_radius, es.boundary_probes, ctx);
@@ -70,6 +70,8 @@ template <class SceneT>
             done += e - b;
             settings.progress(RenderPhase::precompute, double(done) / double(samples.size()));
         }
+        const std::lock_guard lock(report);
+        rays += ctx.rays;
     });
     return PrecomputedIrradiance(samples);
 }
@@ -115,7 +117,7 @@ template <class SceneT>
         settle(maps.global, std::move(traced), stats.global);
         if (pass.keep_normals && !cancelled()) {
             const auto start = std::chrono::steady_clock::now();
-            maps.irradiance = precompute_irradiance(scene, *maps.global, photons, normals, settings);
+            maps.irradiance = precompute_irradiance(scene, *maps.global, photons, normals, settings, stats.rays);
             stats.precompute_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
     }

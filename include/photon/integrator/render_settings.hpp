@@ -57,7 +57,7 @@ struct RenderSettings {
     unsigned max_photon_depth = 10;
     EmissionSampler emission = EmissionSampler::direct;
 
-    EstimateSettings global_estimate{.k = 100, .max_radius = 0.25f};
+    EstimateSettings global_estimate{.k = 100, .max_radius = 0.25f, .boundary_probes = 16};
     EstimateSettings caustic_estimate{.k = 60, .max_radius = 0.05f, .kernel = {Filter::cone, 1.1f}};
     /// pm: gather rays per camera sample at a diffuse hit (0: read the global map directly).
     unsigned final_gather_rays = 16;
