@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages photon needs for a purpose, and nothing else:
+#   install-deps.sh render   compiler, CMake, GLM, OpenImageIO, CLI11 (enough to render)
+#   install-deps.sh test     render + Catch2, POV-Ray (scene files are checked in it), clang for
+#                            the sanitizer build and the fuzzer
+#   install-deps.sh bench    test + Google Benchmark, nanoflann, Embree, OpenImageIO tools
+# Uses sudo only when not already root. Packages already present are not reinstalled.
+set -euo pipefail
+
+purpose=${1:-render}
+render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev libcli11-dev libtinyobjloader-dev)
+test=("${render[@]}" catch2 povray openimageio-tools clang libclang-rt-14-dev)
+bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine)
+case "$purpose" in
+  render) packages=("${render[@]}") ;;
+  test) packages=("${test[@]}") ;;
+  bench) packages=("${bench[@]}") ;;
+  *) echo "usage: $0 render|test|bench" >&2; exit 2 ;;
+esac
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo=()
+[ "$(id -u)" -eq 0 ] || sudo=(sudo)
+echo "install-deps: installing ${missing[*]}"
+"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+"${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
