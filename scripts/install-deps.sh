@@ -8,8 +8,9 @@
 set -euo pipefail
 
 purpose=${1:-render}
-render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev libcli11-dev libtinyobjloader-dev)
-test=("${render[@]}" catch2 povray openimageio-tools clang libclang-rt-14-dev)
+# openimageio-tools is needed to build: Debian's OpenImageIO CMake config checks that its tools exist.
+render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev)
+test=("${render[@]}" catch2 povray clang libclang-rt-14-dev)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine)
 case "$purpose" in
   render) packages=("${render[@]}") ;;
