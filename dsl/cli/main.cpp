@@ -114,6 +114,7 @@ struct SceneOptions {
 struct RenderOptions {
     std::string output;
     std::optional<unsigned> width, height, spp, shadow_samples, final_gather, ray_depth, photon_depth, threads;
+    std::optional<float> irradiance_cache;
     std::optional<unsigned> global_k, caustic_k;
     std::optional<float> global_radius, caustic_radius;
     std::optional<std::size_t> global_photons, caustic_photons;
@@ -274,6 +275,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     if (!ro.mode.empty()) o.mode = parse_mode(ro.mode);
     o.global_photons = ro.global_photons, o.caustic_photons = ro.caustic_photons;
     o.samples_per_pixel = ro.spp, o.shadow_samples = ro.shadow_samples, o.final_gather_rays = ro.final_gather;
+    o.irradiance_cache_error = ro.irradiance_cache;
     o.max_ray_depth = ro.ray_depth, o.max_photon_depth = ro.photon_depth, o.threads = ro.threads, o.seed = ro.seed;
     o.global_k = ro.global_k, o.caustic_k = ro.caustic_k, o.global_radius = ro.global_radius,
     o.caustic_radius = ro.caustic_radius;
@@ -418,7 +420,10 @@ int main(int argc, char** argv) {
     render->add_option("--shadow-samples", ro.shadow_samples, "Shadow rays per area light and shading point")
         ->check(CLI::PositiveNumber);
     render->add_option("--final-gather", ro.final_gather,
-                       "Final gather rays per diffuse hit in pm mode (0: read the global map)");
+                       "Rays per final gather in pm mode (0: read the global map at the first diffuse hit)");
+    render->add_option("--irradiance-cache", ro.irradiance_cache,
+                       "Error bound of the cache of final gathers (Ward's a, default 0.2; 0: gather at every sample)")
+        ->check(CLI::Range(0.0f, 1.0f));
     render->add_option("--ray-depth", ro.ray_depth, "Longest camera path, primary ray = 1 (POV-Ray's max_trace_level)")
         ->check(CLI::PositiveNumber);
     render->add_option("--photon-depth", ro.photon_depth, "Most bounces of a photon")->check(CLI::PositiveNumber);

@@ -5,8 +5,10 @@
 // caustic map, indirect light from the global map, read directly or through final gathering
 // (Figure 2). Mirror and glass recurse up to the maximum ray depth.
 
+#include <limits>
 #include <optional>
 
+#include "../estimator/irradiance_cache.hpp"
 #include "../estimator/precomputed_irradiance.hpp"
 #include "../geometry/offset.hpp"
 #include "../material/scatter.hpp"
@@ -17,11 +19,12 @@
 
 namespace photon {
 
-/// The photon maps pass 2 reads, and the irradiance precomputed from the global one; any may
-/// be absent.
+/// The photon maps pass 2 reads, and what is derived from them: irradiance precomputed from the
+/// global map and the irradiance cache of final gathers. Any may be absent.
 struct PhotonMaps {
     std::optional<PhotonMap> global, caustic;
     std::optional<PrecomputedIrradiance> irradiance;
+    std::optional<IrradianceCache> irradiance_cache;  ///< final gathers, built by a pretrace
 };
 
 template <class SceneT> class RadianceIntegrator {
@@ -107,26 +110,76 @@ private:
         return estimate_irradiance(*map, x, n, es, ctx.scratch, &disc);
     }
 
-    /// Indirect irradiance at x by final gathering: cosine-distributed, stratified rays whose
-    /// hits are read from the global map (which then holds every diffuse hit). E = pi * mean L.
+    /// Indirect irradiance at x by final gathering (through the irradiance cache when there is one
+    /// and it covers x).
     [[nodiscard]] Rgb<S> final_gather(const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
-        const unsigned grid = strata_per_axis(settings_.final_gather_rays);
+        if (maps_.irradiance_cache)
+            if (const auto e = maps_.irradiance_cache->interpolate(Vec3<float>(x), Vec3<float>(n), ctx.nearest))
+                return Rgb<S>(*e);
+        return gather(x, n, settings_.final_gather_rays, ctx).irradiance;
+    }
+
+public:
+    struct Gathered {
+        Rgb<S> irradiance;
+        S harmonic_distance;  ///< harmonic mean of the distances the rays travelled (inf: none hit)
+    };
+
+    /// Final gathering at x (already offset) with unit normal n: `rays` cosine-distributed,
+    /// stratified rays whose hits are read from the global map, or its precomputed irradiance.
+    /// E = pi * mean L.
+    [[nodiscard]] Gathered gather(const Vec3<S>& x, const Vec3<S>& n, unsigned rays, ShadingContext& ctx) const {
+        const unsigned grid = strata_per_axis(rays);
         const unsigned count = grid * grid;
         const Frame<S> frame = Frame<S>::from_normal(n);
         Rgb<S> sum(S(0));
+        S inverse_distances = 0;
         for (unsigned i = 0; i < count; ++i) {
             const Vec3<S> dir = frame.to_world(cosine_hemisphere(stratified(i, grid, ctx.rng.uniform2<S>())));
             ++ctx.rays.gather;
-            sum += gathered_radiance(Ray<S>{x, dir}, 1, ctx);
+            S distance = std::numeric_limits<S>::infinity();
+            sum += gathered_radiance(Ray<S>{x, dir}, 1, ctx, &distance);
+            inverse_distances += S(1) / distance;
         }
-        return sum * (pi<S> / S(count));
+        return {sum * (pi<S> / S(count)),
+                inverse_distances > S(0) ? S(count) / inverse_distances : std::numeric_limits<S>::infinity()};
     }
 
+    /// Calls visit(x, n, path_length) for every diffuse hit of the camera ray and of the mirror
+    /// and glass rays it spawns (as radiance() would shade them), with x already offset.
+    template <class Visit>
+    void for_each_diffuse_hit(const Ray<S>& ray, unsigned depth, S path_length, Visit&& visit) const {
+        const auto surface = scene_.intersect(ray);
+        if (!surface) return;
+        const Material<S>& material = *surface->material;
+        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Vec3<S>& x = surface->hit.point;
+        const S error = intersection_error(x, ray.origin);
+        const S length = path_length + surface->hit.t;
+        if (material.has_diffuse()) visit(offset_origin(x, f.normal, error), f.normal, length);
+        if (depth >= settings_.max_ray_depth || !material.is_specular()) return;
+        const Scattering<S> sc = material.scattering(f.cos_i, f.entering);
+        bool reflect_too = !is_black(sc.specular);
+        if (!is_black(sc.transmission)) {
+            if (const auto refracted = refract(ray.direction, f.normal, relative_eta(material, f.entering)))
+                for_each_diffuse_hit(Ray<S>{offset_origin(x, -f.normal, error), *refracted}, depth + 1, length, visit);
+            else
+                reflect_too = true;
+        }
+        if (reflect_too)
+            for_each_diffuse_hit(Ray<S>{offset_origin(x, f.normal, error), reflect(ray.direction, f.normal)}, depth + 1,
+                                 length, visit);
+    }
+
+private:
     /// Radiance along a gather ray: the global map's estimate at its first diffuse hit, through
     /// mirrors and glass.
-    [[nodiscard]] Rgb<S> gathered_radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
+    /// `distance`, if given, receives the distance to the first hit.
+    [[nodiscard]] Rgb<S> gathered_radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx,
+                                           S* distance = nullptr) const {
         const auto surface = scene_.intersect(ray);
         if (!surface) return Rgb<S>(S(0));
+        if (distance) *distance = surface->hit.t;
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(surface->hit.normal, ray.direction);
         const S error = intersection_error(surface->hit.point, ray.origin);

@@ -10,6 +10,7 @@
 #include "../parallel/parallel_for.hpp"
 #include "../scene/camera.hpp"
 #include "../tracing/photon_tracer.hpp"
+#include "irradiance_cache_pass.hpp"
 #include "path_tracer.hpp"
 #include "radiance.hpp"
 
@@ -28,6 +29,10 @@ struct RenderResult {
     return {.direct = gathering || all_light,
             .caustic = gathering || !has_caustic_map,
             .indirect = true};
+}
+
+[[nodiscard]] inline bool uses_irradiance_cache(const RenderSettings& s) noexcept {
+    return s.mode == RenderMode::pm && s.final_gather_rays > 0 && s.irradiance_cache_error > 0.0f;
 }
 
 [[nodiscard]] inline bool uses_precomputed_irradiance(const RenderSettings& s) noexcept {
@@ -188,11 +193,12 @@ template <class SceneT>
     stats.height = settings.height;
     stats.threads = resolve_threads(settings.threads);
     stats.mode = to_string(settings.mode);
-    const PhotonMaps maps = build_photon_maps(scene, settings, stats);
+    PhotonMaps maps = build_photon_maps(scene, settings, stats);
     if (settings.cancel && settings.cancel->load()) {
         result.film = Film(settings.width, settings.height);  // nothing rendered yet
         stats.partial = true;
     } else {
+        if (uses_irradiance_cache(settings)) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, settings, stats);
         result.film = render_image(scene, camera, maps, settings, stats);
     }
     stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -59,8 +59,11 @@ struct RenderSettings {
 
     EstimateSettings global_estimate{.k = 100, .max_radius = 0.25f, .boundary_probes = 16};
     EstimateSettings caustic_estimate{.k = 60, .max_radius = 0.05f, .kernel = {Filter::cone, 1.1f}};
-    /// pm: gather rays per camera sample at a diffuse hit (0: read the global map directly).
-    unsigned final_gather_rays = 16;
+    /// pm: rays per final gather (0: read the global map directly at the first diffuse hit).
+    unsigned final_gather_rays = 256;
+    /// pm: final gathers are cached and interpolated with this error bound (Ward's a); 0 gathers
+    /// at every camera sample instead (then use fewer rays, e.g. 16).
+    float irradiance_cache_error = 0.2f;
     /// Final gathering reads irradiance precomputed at every `irradiance_stride`-th global photon
     /// (Christensen 1999) instead of running a density estimate per gather ray; 0 turns it off.
     unsigned irradiance_stride = 4;
@@ -89,6 +92,8 @@ inline void validate(const RenderSettings& s) {
         if (!(e->flatten >= 1.0f) || !std::isfinite(e->flatten)) fail("flatten must be >= 1");
         if (e->kernel.filter == Filter::cone && !(e->kernel.cone_k >= 1.0f)) fail("cone filter k must be >= 1");
     }
+    if (!(s.irradiance_cache_error >= 0.0f) || !(s.irradiance_cache_error <= 1.0f))
+        fail("irradiance cache error must be in [0, 1]");
 }
 
 }  // namespace photon

@@ -34,7 +34,8 @@ struct RenderStats {
     PhotonMapStats global, caustic;
     RayCounts rays;
     std::uint64_t estimates = 0;  ///< photon map density estimates
-    double precompute_seconds = 0, render_seconds = 0, total_seconds = 0;
+    std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
+    double precompute_seconds = 0, cache_seconds = 0, render_seconds = 0, total_seconds = 0;
     bool partial = false;  ///< cancelled before every pixel was rendered
 };
 
@@ -64,8 +65,9 @@ struct RenderStats {
     row("", "refraction %llu, gather %llu, probe %llu", (unsigned long long)s.rays.refraction,
         (unsigned long long)s.rays.gather, (unsigned long long)s.rays.probe);
     row("density estimates", "%llu", (unsigned long long)s.estimates);
-    row("time", "precompute %.2f s, render %.2f s, total %.2f s", s.precompute_seconds, s.render_seconds,
-        s.total_seconds);
+    row("irradiance cache", "%llu records", (unsigned long long)s.cache_records);
+    row("time", "precompute %.2f s, cache %.2f s, render %.2f s, total %.2f s", s.precompute_seconds,
+        s.cache_seconds, s.render_seconds, s.total_seconds);
     return out;
 }
 

@@ -29,6 +29,7 @@ struct SettingsOverrides {
     std::optional<RenderMode> mode;
     std::optional<std::size_t> global_photons, caustic_photons;
     std::optional<unsigned> samples_per_pixel, shadow_samples, final_gather_rays, max_ray_depth, max_photon_depth;
+    std::optional<float> irradiance_cache_error;
     std::optional<unsigned> threads;
     std::optional<std::uint64_t> seed;
     std::optional<unsigned> global_k, caustic_k;
@@ -265,6 +266,7 @@ template <Scalar S>
     if (p.final_gather) s.final_gather_rays = *p.final_gather;
     if (p.samples_per_pixel) s.samples_per_pixel = *p.samples_per_pixel;
     if (p.irradiance_stride) s.irradiance_stride = *p.irradiance_stride;
+    if (p.irradiance_cache) s.irradiance_cache_error = float(*p.irradiance_cache);
     if (p.seed) s.seed = *p.seed;
     if (p.shadow_samples) {
         s.shadow_samples = *p.shadow_samples;
@@ -288,6 +290,7 @@ template <Scalar S>
     if (o.samples_per_pixel) s.samples_per_pixel = *o.samples_per_pixel;
     if (o.shadow_samples) s.shadow_samples = *o.shadow_samples;
     if (o.final_gather_rays) s.final_gather_rays = *o.final_gather_rays;
+    if (o.irradiance_cache_error) s.irradiance_cache_error = *o.irradiance_cache_error;
     if (o.max_ray_depth) s.max_ray_depth = *o.max_ray_depth;
     if (o.max_photon_depth) s.max_photon_depth = *o.max_photon_depth;
     if (o.threads) s.threads = *o.threads;

@@ -265,6 +265,7 @@ struct PhotonSettings {
     std::optional<std::uint64_t> global_photons, caustic_photons;
     EstimateDescription global_estimate, caustic_estimate;
     std::optional<unsigned> max_photon_depth, final_gather, shadow_samples, samples_per_pixel, irradiance_stride;
+    std::optional<double> irradiance_cache;  ///< error bound of the final-gather cache, 0: off
     std::optional<std::uint64_t> seed;
 };
 

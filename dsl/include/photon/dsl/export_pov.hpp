@@ -80,6 +80,7 @@ private:
         if (p.shadow_samples) own << "  shadow_samples " << *p.shadow_samples << '\n';
         if (p.samples_per_pixel) own << "  samples_per_pixel " << *p.samples_per_pixel << '\n';
         if (p.irradiance_stride) own << "  irradiance_stride " << *p.irradiance_stride << '\n';
+        if (p.irradiance_cache) own << "  irradiance_cache " << *p.irradiance_cache << '\n';
         if (p.seed) own << "  seed " << *p.seed << '\n';
         if (!own.str().empty()) out_ << "#ifdef (photon_version)\nglobal_settings {\n" << own.str() << "}\n#end\n";
         out_ << '\n';

@@ -175,6 +175,7 @@ inline constexpr std::string_view photon_keywords[] = {"width",
                                                        "shadow_samples",
                                                        "samples_per_pixel",
                                                        "irradiance_stride",
+                                                       "irradiance_cache",
                                                        "seed"};
 inline constexpr std::string_view other_keywords[] = {"camera",
                                                       "global_settings",
@@ -1957,6 +1958,11 @@ private:
                 p.samples_per_pixel = positive("`samples_per_pixel`");
             } else if (w == "irradiance_stride") {
                 p.irradiance_stride = unsigned(parse_integer("`irradiance_stride`", 0, 1e6));
+            } else if (w == "irradiance_cache") {
+                SourceLocation at;
+                const double a = parse_float("`irradiance_cache`", &at);
+                if (!(a >= 0 && a <= 1)) fail(at, "`irradiance_cache` error must be from 0 (off) to 1, found " + format_number(a));
+                p.irradiance_cache = a;
             } else {  // seed
                 p.seed = count("`seed`");
             }
@@ -1967,7 +1973,8 @@ private:
             ", or photon's own: global_photons, caustic_photons, global_estimate, ...)",
             {"assumed_gamma", "ambient_light", "max_trace_level", "adc_bailout", "radiosity", "photons", "width",
              "height", "render_mode", "global_photons", "caustic_photons", "global_estimate", "caustic_estimate",
-             "max_photon_depth", "final_gather", "shadow_samples", "samples_per_pixel", "irradiance_stride", "seed"});
+             "max_photon_depth", "final_gather", "shadow_samples", "samples_per_pixel", "irradiance_stride",
+             "irradiance_cache", "seed"});
     }
 
     void parse_estimate(const Token& kw, EstimateDescription& e) {
