@@ -26,7 +26,7 @@ global_settings {
   global_estimate { count 100 radius 0.25 }
   caustic_estimate { count 60 radius 0.05 }
   max_photon_depth 10
-  final_gather 256
+  final_gather 512
   shadow_samples 16
   samples_per_pixel 4
 }
