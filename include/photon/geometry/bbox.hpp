@@ -46,6 +46,10 @@ template <Scalar S> struct BBox {
         return p.x >= min.x && p.y >= min.y && p.z >= min.z && p.x <= max.x && p.y <= max.y &&
                p.z <= max.z;
     }
+    [[nodiscard]] bool overlaps(const BBox& b) const noexcept {
+        return min.x <= b.max.x && b.min.x <= max.x && min.y <= b.max.y && b.min.y <= max.y &&
+               min.z <= b.max.z && b.min.z <= max.z;
+    }
     /// Largest absolute coordinate of the box: the scale that floating-point errors follow.
     [[nodiscard]] S magnitude() const noexcept {
         return std::max(max_component(glm::abs(min)), max_component(glm::abs(max)));

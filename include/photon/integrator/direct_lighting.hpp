@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "../geometry/bbox.hpp"
 #include "../light/light.hpp"
 #include "../material/fresnel.hpp"
 #include "../material/material.hpp"
@@ -29,18 +30,28 @@ template <class SceneT, Scalar S>
     const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
     const S phong = material.params().phong;
     for (const Light<S>& light : scene.lights()) {
-        const bool area = light_radius(light) > S(0);
+        const IncidentSampler<S> sampler(light, x);
+        const bool area = sampler.is_area();
         const unsigned grid = area ? strata_per_axis(shadow_samples) : 1u;
         const unsigned count = grid * grid;
+        // All shadow rays to this light stay in the box around x and the light, so only the
+        // objects touching that box can block them: found once here, not per ray.
+        const bool culled = count > 1;
+        if (culled) {
+            BBox<S> region = BBox<S>::of_point(x);
+            region.extend(BBox<S>{light_center(light) - light_radius(light), light_center(light) + light_radius(light)});
+            scene.occluders_in(region, ctx.occluders);
+        }
         Rgb<S> sum(S(0));
         for (unsigned i = 0; i < count; ++i) {
             const Vec2<S> u = area ? stratified(i, grid, ctx.rng.uniform2<S>()) : Vec2<S>(S(0.5));
-            const auto incident = sample_incident(light, x, u);
+            const auto incident = sampler.sample(u);
             if (!incident) continue;
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0))) continue;
             ++ctx.rays.shadow;
-            if (scene.occluded(Ray<S>{x, incident->direction, incident->distance})) continue;
+            const Ray<S> shadow{x, incident->direction, incident->distance};
+            if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
             Rgb<S> f = brdf * cos_theta;
             if (phong > S(0)) {
                 // POV-Ray's phong term: strength * cos(alpha)^size, alpha between the mirrored

@@ -13,6 +13,7 @@ struct ShadingContext {
     Pcg32 rng{0, 0};
     EstimateScratch scratch{};
     std::vector<Neighbor<float>> nearest{};  ///< for precomputed-irradiance lookups
+    std::vector<std::uint32_t> occluders{};  ///< objects that may shadow one area light sample set
     RayCounts rays{};
     std::uint64_t estimates = 0;
 };

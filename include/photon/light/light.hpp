@@ -89,36 +89,67 @@ template <Scalar S> struct IncidentLight {
     Rgb<S> irradiance;  ///< irradiance on a surface facing the light; times cos(theta) for others
 };
 
-/// One sample of the light seen from `x`, with u uniform in [0,1)^2 (stratify it for soft
-/// shadows). Nothing when `x` is outside the cone or inside the light. Sphere lights are sampled
-/// uniformly in the solid angle they subtend, so the estimate is exact for an unoccluded light.
+/// A light as seen from one shading point `x`: what every sample shares (the direction to the
+/// centre, the cone the sphere subtends, its frame) is computed once, so n x n shadow samples
+/// cost one square root each. Sphere lights are sampled uniformly in the solid angle they
+/// subtend, so the estimate is exact for an unoccluded light.
+template <Scalar S> class IncidentSampler {
+public:
+    IncidentSampler(const Light<S>& light, const Vec3<S>& x) noexcept : cone_(light_cone(light)) {
+        to_center_ = light_center(light) - x;
+        const S d2 = glm::dot(to_center_, to_center_);
+        radius_ = light_radius(light);
+        visible_ = d2 > radius_ * radius_;  // false inside the light
+        if (!visible_) return;
+        const S dist = std::sqrt(d2);
+        axis_ = to_center_ / dist;
+        const Rgb<S> intensity = radiant_intensity(light);
+        if (radius_ == S(0)) {
+            distance_ = dist;
+            value_ = intensity / d2;
+            return;
+        }
+        // Cone of directions subtended by the sphere; 1 - cos computed as sin^2 / (1 + cos).
+        const S sin2_max = radius_ * radius_ / d2;
+        cos_max_ = std::sqrt(std::max(S(0), S(1) - sin2_max));
+        const S one_minus_cos = sin2_max / (S(1) + cos_max_);
+        frame_ = Frame<S>::from_normal(axis_);
+        value_ = intensity / (pi<S> * radius_ * radius_) * (S(2) * pi<S> * one_minus_cos);
+    }
+
+    /// Whether more than one sample can differ (an area light).
+    [[nodiscard]] bool is_area() const noexcept { return radius_ > S(0); }
+
+    /// One sample, with u uniform in [0,1)^2 (stratify it for soft shadows). Nothing when `x`
+    /// is outside the cone or inside the light.
+    [[nodiscard]] std::optional<IncidentLight<S>> sample(Vec2<S> u) const noexcept {
+        if (!visible_) return std::nullopt;
+        if (radius_ == S(0)) {
+            if (cone_ && !cone_->contains(-axis_)) return std::nullopt;
+            return IncidentLight<S>{axis_, distance_, value_};
+        }
+        const Vec3<S> dir = frame_.to_world(Vec3<S>{uniform_cone(u, cos_max_)});
+        if (cone_ && !cone_->contains(-dir)) return std::nullopt;
+        const S b = glm::dot(dir, to_center_);
+        const Vec3<S> off = to_center_ - b * dir;
+        const S t = b - std::sqrt(std::max(S(0), radius_ * radius_ - glm::dot(off, off)));
+        return IncidentLight<S>{dir, t, value_};
+    }
+
+private:
+    const std::optional<Cone<S>>& cone_;
+    Vec3<S> to_center_{}, axis_{};
+    S radius_ = S(0), distance_ = S(0), cos_max_ = S(1);
+    Frame<S> frame_{};
+    Rgb<S> value_{};
+    bool visible_ = false;
+};
+
+/// One sample of `light` seen from `x` (IncidentSampler for a single sample).
 template <Scalar S>
 [[nodiscard]] std::optional<IncidentLight<S>> sample_incident(const Light<S>& light, const Vec3<S>& x,
                                                               Vec2<S> u) noexcept {
-    const Vec3<S> to_center = light_center(light) - x;
-    const S d2 = glm::dot(to_center, to_center);
-    const S radius = light_radius(light);
-    const auto& cone = light_cone(light);
-    if (!(d2 > radius * radius)) return std::nullopt;
-    const S dist = std::sqrt(d2);
-    const Rgb<S> intensity = radiant_intensity(light);
-    if (radius == S(0)) {
-        const Vec3<S> dir = to_center / dist;
-        if (cone && !cone->contains(-dir)) return std::nullopt;
-        return IncidentLight<S>{dir, dist, intensity / d2};
-    }
-    // Cone of directions subtended by the sphere; 1 - cos computed as sin^2 / (1 + cos).
-    const S sin2_max = radius * radius / d2;
-    const S cos_max = std::sqrt(std::max(S(0), S(1) - sin2_max));
-    const S one_minus_cos = sin2_max / (S(1) + cos_max);
-    const Vec3<S> local{uniform_cone(u, cos_max)};
-    const Vec3<S> dir = Frame<S>::from_normal(to_center / dist).to_world(local);
-    if (cone && !cone->contains(-dir)) return std::nullopt;
-    const S b = glm::dot(dir, to_center);
-    const Vec3<S> off = to_center - b * dir;
-    const S t = b - std::sqrt(std::max(S(0), radius * radius - glm::dot(off, off)));
-    const Rgb<S> radiance = intensity / (pi<S> * radius * radius);
-    return IncidentLight<S>{dir, t, radiance * (S(2) * pi<S> * one_minus_cos)};
+    return IncidentSampler<S>(light, x).sample(u);
 }
 
 }  // namespace photon

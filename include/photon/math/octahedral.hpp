@@ -24,7 +24,8 @@ namespace photon {
     return static_cast<std::uint16_t>(quantise(u) | (quantise(v) << 8));
 }
 
-[[nodiscard]] inline Vec3<float> decode_octahedral(std::uint16_t bits) noexcept {
+/// The decoded direction before normalisation (length in [1/sqrt(3), 1]): enough for sign tests.
+[[nodiscard]] inline Vec3<float> decode_octahedral_unnormalized(std::uint16_t bits) noexcept {
     const float u = float(bits & 0xffu) / 255.0f * 2.0f - 1.0f, v = float(bits >> 8) / 255.0f * 2.0f - 1.0f;
     Vec3<float> d{u, v, 1.0f - std::abs(u) - std::abs(v)};
     if (d.z < 0.0f) {
@@ -32,7 +33,11 @@ namespace photon {
         d.x = (1.0f - std::abs(d.y)) * std::copysign(1.0f, x);
         d.y = (1.0f - std::abs(x)) * std::copysign(1.0f, d.y);
     }
-    return glm::normalize(d);
+    return d;
+}
+
+[[nodiscard]] inline Vec3<float> decode_octahedral(std::uint16_t bits) noexcept {
+    return glm::normalize(decode_octahedral_unnormalized(bits));
 }
 
 }  // namespace photon

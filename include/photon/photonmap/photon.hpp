@@ -38,13 +38,21 @@ public:
     /// Power in watts per channel.
     [[nodiscard]] Rgb<float> power() const noexcept {
         const int exponent = int((bits_ >> 36) & 0xffu) - 128;
-        const float scale = std::ldexp(1.0f, exponent - mantissa_bits);
+        // 2^(exponent - 12) built from its bits when it is a normal float (always, in practice).
+        const int biased = exponent - mantissa_bits + 127;
+        const float scale = biased > 0 ? std::bit_cast<float>(std::uint32_t(biased) << 23)
+                                       : std::ldexp(1.0f, exponent - mantissa_bits);
         return {float(bits_ & mask) * scale, float((bits_ >> 12) & mask) * scale, float((bits_ >> 24) & mask) * scale};
     }
     [[nodiscard]] PathKind kind() const noexcept { return PathKind((bits_ >> 44) & 0x3u); }
     /// Unit direction the photon travelled along when it arrived (pointing into the surface).
     [[nodiscard]] Vec3<float> incident_direction() const noexcept {
         return decode_octahedral(std::uint16_t(bits_ >> 48));
+    }
+    /// Whether the photon arrived travelling against `n` (onto the side `n` faces); no
+    /// normalisation, the sign is all the estimate's back-face test needs.
+    [[nodiscard]] bool arrived_against(const Vec3<float>& n) const noexcept {
+        return glm::dot(decode_octahedral_unnormalized(std::uint16_t(bits_ >> 48)), n) < 0.0f;
     }
     [[nodiscard]] std::uint64_t bits() const noexcept { return bits_; }
 
