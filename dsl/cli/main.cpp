@@ -115,6 +115,7 @@ struct RenderOptions {
     std::string output;
     std::optional<unsigned> width, height, spp, shadow_samples, final_gather, ray_depth, photon_depth, threads;
     std::optional<float> irradiance_cache;
+    std::optional<unsigned> irradiance_stride;
     std::optional<unsigned> global_k, caustic_k;
     std::optional<float> global_radius, caustic_radius;
     std::optional<std::size_t> global_photons, caustic_photons;
@@ -276,6 +277,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     o.global_photons = ro.global_photons, o.caustic_photons = ro.caustic_photons;
     o.samples_per_pixel = ro.spp, o.shadow_samples = ro.shadow_samples, o.final_gather_rays = ro.final_gather;
     o.irradiance_cache_error = ro.irradiance_cache;
+    o.irradiance_stride = ro.irradiance_stride;
     o.max_ray_depth = ro.ray_depth, o.max_photon_depth = ro.photon_depth, o.threads = ro.threads, o.seed = ro.seed;
     o.global_k = ro.global_k, o.caustic_k = ro.caustic_k, o.global_radius = ro.global_radius,
     o.caustic_radius = ro.caustic_radius;
@@ -405,8 +407,9 @@ int main(int argc, char** argv) {
     render
         ->add_option("--mode", ro.mode,
                      "rt: ray tracing, direct light only; pm: photon mapping (global illumination); "
-                     "pm-direct: everything read from the photon maps")
-        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct"}));
+                     "pm-direct: everything read from the photon maps; reference: path tracing, "
+                     "slow and unbiased, to check the others against")
+        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct", "reference"}));
     render->add_option("--global-photons", ro.global_photons, "Photons emitted for the global map");
     render->add_option("--caustic-photons", ro.caustic_photons,
                        "Photons emitted towards mirrors and glass for the caustic map");
@@ -424,6 +427,9 @@ int main(int argc, char** argv) {
     render->add_option("--irradiance-cache", ro.irradiance_cache,
                        "Error bound of the cache of final gathers (Ward's a, default 0.2; 0: gather at every sample)")
         ->check(CLI::Range(0.0f, 1.0f));
+    render->add_option("--irradiance-stride", ro.irradiance_stride,
+                       "Final gather rays read irradiance precomputed at every N-th global photon "
+                       "(default 4; 0: a full density estimate per gather ray)");
     render->add_option("--ray-depth", ro.ray_depth, "Longest camera path, primary ray = 1 (POV-Ray's max_trace_level)")
         ->check(CLI::PositiveNumber);
     render->add_option("--photon-depth", ro.photon_depth, "Most bounces of a photon")->check(CLI::PositiveNumber);

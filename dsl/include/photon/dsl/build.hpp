@@ -30,6 +30,7 @@ struct SettingsOverrides {
     std::optional<std::size_t> global_photons, caustic_photons;
     std::optional<unsigned> samples_per_pixel, shadow_samples, final_gather_rays, max_ray_depth, max_photon_depth;
     std::optional<float> irradiance_cache_error;
+    std::optional<unsigned> irradiance_stride;
     std::optional<unsigned> threads;
     std::optional<std::uint64_t> seed;
     std::optional<unsigned> global_k, caustic_k;
@@ -291,6 +292,7 @@ template <Scalar S>
     if (o.shadow_samples) s.shadow_samples = *o.shadow_samples;
     if (o.final_gather_rays) s.final_gather_rays = *o.final_gather_rays;
     if (o.irradiance_cache_error) s.irradiance_cache_error = *o.irradiance_cache_error;
+    if (o.irradiance_stride) s.irradiance_stride = *o.irradiance_stride;
     if (o.max_ray_depth) s.max_ray_depth = *o.max_ray_depth;
     if (o.max_photon_depth) s.max_photon_depth = *o.max_photon_depth;
     if (o.threads) s.threads = *o.threads;
