@@ -11,7 +11,7 @@ purpose=${1:-render}
 # openimageio-tools is needed to build: Debian's OpenImageIO CMake config checks that its tools exist.
 render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev)
 test=("${render[@]}" catch2 povray clang libclang-rt-14-dev)
-bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine)
+bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
 case "$purpose" in
   render) packages=("${render[@]}") ;;
   test) packages=("${test[@]}") ;;
