@@ -20,11 +20,15 @@ namespace photon {
     return n == 0 ? 1 : n;
 }
 
-/// Radiance reflected towards `wo` at `x` (already offset off the surface) with unit normal `n`
-/// on the shaded side, from every light, by shadow rays.
+/// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
+/// side, from every light, by shadow rays leaving from `shadow_origin` (x offset off the surface).
+/// The light is evaluated at x itself, not at the offset origin: the offset grows with the
+/// distance from the world origin (1.5 cm at 1000 units in float) and would otherwise bias
+/// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
 template <class SceneT, Scalar S>
-[[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& wo,
-                                     const Material<S>& material, unsigned shadow_samples, ShadingContext& ctx) {
+[[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
+                                     const Vec3<S>& n, const Vec3<S>& wo, const Material<S>& material,
+                                     unsigned shadow_samples, ShadingContext& ctx) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
     const S phong = material.params().phong;
@@ -40,7 +44,7 @@ template <class SceneT, Scalar S>
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0))) continue;
             ++ctx.rays.shadow;
-            if (scene.occluded(Ray<S>{x, incident->direction, incident->distance})) continue;
+            if (scene.occluded(Ray<S>{shadow_origin, incident->direction, incident->distance})) continue;
             Rgb<S> f = brdf * cos_theta;
             if (phong > S(0)) {
                 // POV-Ray's phong term: strength * cos(alpha)^size, alpha between the mirrored
