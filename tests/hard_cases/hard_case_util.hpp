@@ -8,6 +8,7 @@
 #include <photon/photon.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,12 @@ inline std::string first_invalid_pixel(const Film& film) {
 
 /// Every render of the suite goes through this: the image holds no NaN, Inf or negative pixel.
 #define HARD_REQUIRE_VALID(film) REQUIRE(::hard::first_invalid_pixel(film) == "")
+
+/// Writes `film` to $PHOTON_HARD_CASE_IMAGES/<name>.exr when that variable names a folder, so
+/// that the renders of this suite can be looked at; does nothing otherwise.
+inline void dump(const Film& film, const std::string& name) {
+    if (const char* dir = std::getenv("PHOTON_HARD_CASE_IMAGES")) write_image(std::string(dir) + "/" + name + ".exr", film);
+}
 
 /// Mean radiance (mean of the three channels) of each cell of a cols x rows grid over the image,
 /// row-major.
