@@ -11,6 +11,17 @@
 namespace photon {
 
 namespace detail {
+/// Unit normal along cross(e1, e2), or zero when the triangle has no representable area. The
+/// cross product is scaled by its largest component before normalising: for a triangle with edges
+/// near the bottom of the exponent range (1e-19 in float) its squared length underflows to 0 and
+/// a plain normalize gives NaN although the cross product itself is not zero.
+template <Scalar S> [[nodiscard]] inline Vec3<S> triangle_normal(const Vec3<S>& e1, const Vec3<S>& e2) noexcept {
+    const Vec3<S> n = glm::cross(e1, e2);
+    const S largest = max_component(glm::abs(n));
+    if (!(largest > S(0)) || !std::isfinite(largest)) return Vec3<S>(S(0));
+    return glm::normalize(n / largest);
+}
+
 /// Moller-Trumbore ray/triangle test on (v0, e1 = v1 - v0, e2 = v2 - v0). Returns t in
 /// (0, t_max) or nothing. Degenerate triangles (zero area) have det = 0 and never hit.
 template <Scalar S>
@@ -42,9 +53,7 @@ public:
     Triangle(const Vec3<S>& v0, const Vec3<S>& v1, const Vec3<S>& v2) : v0_(v0), e1_(v1 - v0), e2_(v2 - v0) {
         if (!is_finite(v0) || !is_finite(v1) || !is_finite(v2))
             throw std::invalid_argument("triangle: vertices must be finite");
-        const Vec3<S> n = glm::cross(e1_, e2_);
-        const S len = glm::length(n);
-        normal_ = len > S(0) ? n / len : Vec3<S>(S(0));
+        normal_ = detail::triangle_normal(e1_, e2_);
     }
 
     [[nodiscard]] Vec3<S> vertex(int i) const noexcept { return i == 0 ? v0_ : (i == 1 ? v0_ + e1_ : v0_ + e2_); }

@@ -47,7 +47,7 @@ public:
         });
         if (!found) return std::nullopt;
         const PreparedTriangle& tri = tris_[hit_index];
-        return Hit<S>{r.t_max, ray.at(r.t_max), glm::normalize(glm::cross(tri.e1, tri.e2))};
+        return Hit<S>{r.t_max, ray.at(r.t_max), detail::triangle_normal(tri.e1, tri.e2)};
     }
 
     [[nodiscard]] bool occluded(const Ray<S>& ray) const noexcept {
@@ -94,7 +94,15 @@ TriangleMesh<S>::TriangleMesh(std::vector<Vec3<S>> positions, std::vector<Index>
     for (std::uint32_t id : bvh_.primitive_indices()) {
         const Index& idx = indices_[id];
         const Vec3<S>& v0 = positions_[idx[0]];
-        tris_.push_back({v0, positions_[idx[1]] - v0, positions_[idx[2]] - v0});
+        const Vec3<S> e1 = positions_[idx[1]] - v0, e2 = positions_[idx[2]] - v0;
+        // A triangle without a normal (collinear or coincident vertices, or an area that
+        // underflows) gets zero edges: det is then exactly 0 and it is never hit. Its own edges
+        // would not do, as rounding in the triple product can make det non-zero for exactly
+        // collinear vertices, and the hit would carry a NaN normal.
+        if (detail::triangle_normal(e1, e2) == Vec3<S>(S(0)))
+            tris_.push_back({v0, Vec3<S>(S(0)), Vec3<S>(S(0))});
+        else
+            tris_.push_back({v0, e1, e2});
     }
 }
 

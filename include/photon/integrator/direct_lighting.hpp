@@ -21,11 +21,15 @@ namespace photon {
     return n == 0 ? 1 : n;
 }
 
-/// Radiance reflected towards `wo` at `x` (already offset off the surface) with unit normal `n`
-/// on the shaded side, from every light, by shadow rays.
+/// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
+/// side, from every light, by shadow rays leaving from `shadow_origin` (x offset off the surface).
+/// The light is evaluated at x itself, not at the offset origin: the offset grows with the
+/// distance from the world origin (1.5 cm at 1000 units in float) and would otherwise bias
+/// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
 template <class SceneT, Scalar S>
-[[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& wo,
-                                     const Material<S>& material, unsigned shadow_samples, ShadingContext& ctx) {
+[[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
+                                     const Vec3<S>& n, const Vec3<S>& wo, const Material<S>& material,
+                                     unsigned shadow_samples, ShadingContext& ctx) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
     const S phong = material.params().phong;
@@ -34,12 +38,14 @@ template <class SceneT, Scalar S>
         const bool area = sampler.is_area();
         const unsigned grid = area ? strata_per_axis(shadow_samples) : 1u;
         const unsigned count = grid * grid;
-        // All shadow rays to this light stay in the box around x and the light, so only the
-        // objects touching that box can block them: found once here, not per ray.
+        // All shadow rays to this light stay in the box around their origin and the light
+        // (moved by the origin's offset, as the rays are), so only the objects touching that
+        // box can block them: found once here, not per ray.
         const bool culled = count > 1;
         if (culled) {
-            BBox<S> region = BBox<S>::of_point(x);
-            region.extend(BBox<S>{light_center(light) - light_radius(light), light_center(light) + light_radius(light)});
+            const Vec3<S> reach = light_center(light) + (shadow_origin - x);
+            BBox<S> region = BBox<S>::of_point(shadow_origin);
+            region.extend(BBox<S>{reach - light_radius(light), reach + light_radius(light)});
             scene.occluders_in(region, ctx.occluders);
         }
         Rgb<S> sum(S(0));
@@ -50,7 +56,7 @@ template <class SceneT, Scalar S>
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0))) continue;
             ++ctx.rays.shadow;
-            const Ray<S> shadow{x, incident->direction, incident->distance};
+            const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
             if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
             Rgb<S> f = brdf * cos_theta;
             if (phong > S(0)) {

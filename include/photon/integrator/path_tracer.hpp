@@ -39,7 +39,7 @@ public:
             const S error = intersection_error(surface->hit.point, ray.origin);
             if (material.has_diffuse()) {
                 const Vec3<S> above = offset_origin(surface->hit.point, f.normal, error);
-                result += throughput * direct_lighting(scene_, above, f.normal, -ray.direction, material, 1, ctx);
+                result += throughput * direct_lighting(scene_, surface->hit.point, above, f.normal, -ray.direction, material, 1, ctx);
             }
             const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, ctx.rng);
             if (s.event == ScatterEvent::absorbed) break;

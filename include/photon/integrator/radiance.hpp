@@ -48,10 +48,10 @@ public:
             const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
             switch (settings_.mode) {
             case RenderMode::rt:
-                result += direct_lighting(scene_, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
+                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
                 break;
             case RenderMode::pm:
-                result += direct_lighting(scene_, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
+                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
                 result += brdf * map_irradiance(maps_.caustic, settings_.caustic_estimate, above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
                                       ? final_gather(above, f.normal, ctx)

@@ -45,7 +45,9 @@ public:
         return {float(bits_ & mask) * scale, float((bits_ >> 12) & mask) * scale, float((bits_ >> 24) & mask) * scale};
     }
     [[nodiscard]] PathKind kind() const noexcept { return PathKind((bits_ >> 44) & 0x3u); }
-    /// Unit direction the photon travelled along when it arrived (pointing into the surface).
+    /// Unit direction pointing into the surface on the side the photon arrived from. The photon
+    /// tracer stores the reversed surface normal of that side (not the travel direction, which
+    /// misjudges the side on curved surfaces; only Lambertian surfaces store photons).
     [[nodiscard]] Vec3<float> incident_direction() const noexcept {
         return decode_octahedral(std::uint16_t(bits_ >> 48));
     }

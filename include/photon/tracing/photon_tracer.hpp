@@ -85,6 +85,13 @@ template <Scalar S> struct EmissionPlan {
     }
 };
 
+/// Whether any light has power to emit.
+template <class Lights> [[nodiscard]] bool has_emitting_light(const Lights& lights) noexcept {
+    for (const auto& l : lights)
+        if (max_component(light_power(l)) > 0) return true;
+    return false;
+}
+
 /// Runs `per_photon(index, rng, block)` for every photon in fixed blocks, in parallel, and
 /// concatenates the blocks in order.
 template <class PerPhoton>
@@ -147,8 +154,13 @@ void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const Phot
             const PathKind kind = depth == 0 ? PathKind::direct : (specular_only ? PathKind::caustic : PathKind::indirect);
             const bool keep = caustic_only ? kind == PathKind::caustic : settings.store.contains(kind);
             if (keep) {
+                // The direction slot holds -f.normal, the side the photon arrived on, not its
+                // travel direction: the estimate's backfacing test compares it with the shading
+                // normal, and on a curved shell a photon travelling nearly tangentially on the
+                // inside has a travel direction that faces the outside's normal a few centimetres
+                // away (a light inside a closed sphere lit its outside at 0.45 W/m^2/sr).
                 block.photons.push_back({Vec3<float>(surface->hit.point),
-                                         PackedPhoton(Rgb<float>(power), Vec3<float>(ray.direction), kind)});
+                                         PackedPhoton(Rgb<float>(power), Vec3<float>(-f.normal), kind)});
                 if (settings.keep_normals) block.normals.push_back(encode_octahedral(Vec3<float>(f.normal)));
             }
         }
@@ -172,6 +184,9 @@ void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const Phot
 template <class SceneT> [[nodiscard]] TracedPhotons trace_global_photons(const SceneT& scene, const PhotonTracingSettings& settings) {
     using S = typename SceneT::scalar_type;
     const auto lights = scene.lights();
+    // No light, or none with power: nothing to emit. (Emitting anyway traced photons of zero
+    // power, and without lights read lights[0] out of range.)
+    if (!detail::has_emitting_light(lights)) return {};
     const detail::EmissionPlan<S> plan(lights, settings.photons);
     return detail::run_blocks(settings, 0x676c6f62616cULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);
@@ -189,7 +204,7 @@ template <class SceneT> [[nodiscard]] bool scene_has_caustics(const SceneT& scen
         target = target || scene.is_caustic_target(i);
         diffuse = diffuse || scene.material_of(i).has_diffuse();
     }
-    return target && diffuse && !scene.lights().empty();
+    return target && diffuse && detail::has_emitting_light(scene.lights());
 }
 
 /// Caustic pass: photons aimed at the caustic targets' bounding spheres, stored only at the end

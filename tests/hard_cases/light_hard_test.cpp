@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// Lights in awkward places: inside a closed sphere (nothing may leak out), exactly on a surface,
+// of zero power, of zero radius, and no light at all.
+
+#include "hard_case_util.hpp"
+
+using namespace photon;
+
+namespace {
+
+template <class S> PinholeCamera<S> room_camera() {
+    return PinholeCamera<S>::look_at({0, 1.2, -3}, {0, 0.5, 0}, {0, 1, 0}, S(55), S(32.0 / 24.0));
+}
+
+/// Floor and back wall; `extra` adds objects and lights.
+template <class S, class Extra> DefaultScene<S> room(Extra&& extra) {
+    DefaultScene<S> scene;
+    const auto white = scene.add_material(Material<S>::lambertian(Rgb<S>(S(0.7))));
+    scene.add(Box<S>({-3, -0.1, -3}, {3, 0, 3}), white);
+    scene.add(Box<S>({-3, 0, 1.2}, {3, 3, 1.3}), white);
+    extra(scene);
+    scene.commit();
+    return scene;
+}
+
+const std::vector<RenderMode> all_modes{RenderMode::rt, RenderMode::pm, RenderMode::pm_direct};
+
+double max_pixel(const Film& film) {
+    double m = 0;
+    for (const auto& p : film.pixels()) m = std::max(m, double(max_component(p)));
+    return m;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("a light inside a closed sphere lights nothing outside it", "[hard][light]", float, double) {
+    using S = TestType;
+    for (const bool area : {false, true}) {
+        const auto scene = room<S>([&](DefaultScene<S>& sc) {
+            sc.add(Sphere<S>({0, 0.6, 0}, S(0.5)), sc.add_material(Material<S>::lambertian(Rgb<S>(S(0.8)))));
+            if (area)
+                sc.add_light(SphereLight<S>{.center = {0.1, 0.6, 0}, .radius = S(0.2), .power = Rgb<S>(S(100))});
+            else
+                sc.add_light(PointLight<S>{{0.1, 0.6, 0}, Rgb<S>(S(100))});
+        });
+        for (const RenderMode mode : all_modes) {
+            INFO((area ? "sphere" : "point") << " light, mode " << to_string(mode));
+            const RenderResult r = render(scene, room_camera<S>(), hard::tiny(mode));
+            HARD_REQUIRE_VALID(r.film);
+            hard::dump(r.film, std::string("light-inside-") + (area ? "sphere-" : "point-") + to_string(mode) + "-" + (sizeof(S) == 4 ? "f" : "d"));
+            CHECK(max_pixel(r.film) == 0.0);  // not one photon or shadow ray gets out
+            if (mode != RenderMode::rt) CHECK(r.stats.global.stored > 0);  // they are all inside
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("a light exactly on a surface", "[hard][light]", float, double) {
+    using S = TestType;
+    // A point light on the floor lights the floor at grazing incidence (cos = 0: nothing) and the
+    // wall normally; a sphere light centred on the floor is half buried in it.
+    const auto point = room<S>([](DefaultScene<S>& sc) { sc.add_light(PointLight<S>{{0, 0, 0}, Rgb<S>(S(50))}); });
+    const auto half_buried = room<S>([](DefaultScene<S>& sc) {
+        sc.add_light(SphereLight<S>{.center = {0, 0, 0}, .radius = S(0.2), .power = Rgb<S>(S(50))});
+    });
+    for (const DefaultScene<S>* scene : {&point, &half_buried}) {
+        for (const RenderMode mode : all_modes) {
+            INFO((scene == &point ? "point" : "sphere") << " light on the floor, mode " << to_string(mode));
+            const RenderResult r = render(*scene, room_camera<S>(), hard::tiny(mode));
+            HARD_REQUIRE_VALID(r.film);
+            CHECK(r.film.mean().x > 0.01);  // the wall is lit
+        }
+    }
+    // rt, point light: the floor sees it at cos = 0, so every pixel that sees the floor (the
+    // bottom row) is black but for rounding in the hit point's height (cos ~ 1e-8).
+    const RenderResult r = render(point, room_camera<S>(), hard::tiny(RenderMode::rt));
+    const double wall = max_pixel(r.film);
+    for (unsigned x = 0; x < r.film.width(); ++x) CHECK(r.film.at(x, r.film.height() - 1).x <= 1e-6 * wall);
+}
+
+TEMPLATE_TEST_CASE("a zero-radius sphere light is an error; a zero-power light is valid and black", "[hard][light]",
+                   float, double) {
+    using S = TestType;
+    DefaultScene<S> empty;
+    CHECK_THROWS_WITH(empty.add_light(SphereLight<S>{.center = {0, 1, 0}, .radius = S(0), .power = Rgb<S>(S(1))}),
+                      Catch::Contains("radius must be positive"));
+    CHECK_THROWS_AS(empty.add_light(SphereLight<S>{.center = {0, 1, 0}, .radius = -S(1), .power = Rgb<S>(S(1))}),
+                    std::invalid_argument);
+    CHECK_THROWS_WITH(empty.add_light(PointLight<S>{{0, 1, 0}, Rgb<S>(S(-1))}), Catch::Contains("power"));
+    CHECK(empty.lights().empty());
+
+    const auto dark = room<S>([](DefaultScene<S>& sc) {
+        sc.add(Sphere<S>({0, 0.4, 0}, S(0.4)), sc.add_material(Material<S>::glass(S(1.5))));
+        sc.add_light(PointLight<S>{{0, 2, 0}, Rgb<S>(S(0))});
+        sc.add_light(SphereLight<S>{.center = {1, 2, 0}, .radius = S(0.1), .power = Rgb<S>(S(0))});
+    });
+    const auto unlit = room<S>([](DefaultScene<S>& sc) {
+        sc.add(Sphere<S>({0, 0.4, 0}, S(0.4)), sc.add_material(Material<S>::glass(S(1.5))));
+    });
+    for (const DefaultScene<S>* scene : {&dark, &unlit}) {
+        for (const RenderMode mode : all_modes) {
+            INFO((scene == &dark ? "zero-power lights" : "no light") << ", mode " << to_string(mode));
+            const RenderResult r = render(*scene, room_camera<S>(), hard::tiny(mode));
+            HARD_REQUIRE_VALID(r.film);
+            CHECK(max_pixel(r.film) == 0.0);
+            // Nothing to emit: no photon is traced or stored.
+            CHECK(r.stats.global.stored == 0);
+            CHECK(r.stats.caustic.stored == 0);
+        }
+    }
+}
