@@ -178,8 +178,9 @@ template <Scalar S> ObjTriangles<S> parse_obj(const std::string& text, const std
     return detail::obj_triangles<S>(reader, name, text);
 }
 
-template <Scalar S> ObjTriangles<S> read_obj(const std::filesystem::path& file) {
-    const std::string name = file.string();
+namespace detail {
+/// read_obj with `name` standing for the file in messages.
+template <Scalar S> ObjTriangles<S> parse_obj_file(const std::filesystem::path& file, const std::string& name) {
     std::error_code ec;
     if (std::filesystem::is_directory(file, ec)) throw ObjError(name, 0, "cannot read the file: it is a directory");
     std::ifstream in(file, std::ios::binary);
@@ -193,6 +194,11 @@ template <Scalar S> ObjTriangles<S> read_obj(const std::filesystem::path& file) 
     // Parsing from memory keeps the text for locating errors and skips the .mtl files, which
     // photon would not use.
     return parse_obj<S>(buffer.str(), name);
+}
+}  // namespace detail
+
+template <Scalar S> ObjTriangles<S> read_obj(const std::filesystem::path& file) {
+    return detail::parse_obj_file<S>(file, file.string());
 }
 
 }  // namespace photon
