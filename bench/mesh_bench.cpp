@@ -43,7 +43,10 @@ struct EmbreeDevice {
     RTCDevice device = nullptr;
     long long bytes = 0;
     EmbreeDevice() {
-        device = rtcNewDevice("threads=1");
+        // EMBREE_CONFIG adds to the configuration, e.g. EMBREE_CONFIG=hugepages=1.
+        const char* extra = std::getenv("EMBREE_CONFIG");
+        const std::string config = std::string("threads=1") + (extra ? std::string(",") + extra : std::string());
+        device = rtcNewDevice(config.c_str());
         if (!device) {
             std::fprintf(stderr, "embree: rtcNewDevice failed (%d)\n", int(rtcGetDeviceError(nullptr)));
             std::exit(1);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../config.hpp"
+#include "../memory/huge_page_allocator.hpp"
 #include "bbox.hpp"
 
 // The float slab test uses SSE (part of x86-64's baseline); elsewhere, and for double, the same
@@ -104,7 +105,7 @@ private:
     // pushes at most three entries.
     static constexpr std::size_t stack_size = 3 * (forced_median_depth + 33) + 1;
 
-    std::vector<Node> nodes_;
+    std::vector<Node, HugePageAllocator<Node>> nodes_;
     BBox<S> bounds_;
     std::vector<std::uint32_t> prim_ids_;
     std::size_t depth_ = 0;

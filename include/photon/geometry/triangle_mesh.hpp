@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../memory/huge_page_allocator.hpp"
 #include "bvh.hpp"
 #include "triangle.hpp"
 
@@ -73,7 +74,7 @@ private:
 
     std::vector<Vec3<S>> positions_;
     std::vector<Index> indices_;
-    std::vector<LeafTriangle> tris_;
+    std::vector<LeafTriangle, HugePageAllocator<LeafTriangle>> tris_;
     Bvh<S> bvh_;
 };
 
