@@ -18,6 +18,7 @@
 #include "../config.hpp"
 #include "../memory/huge_page_allocator.hpp"
 #include "bbox.hpp"
+#include "ray.hpp"
 
 // The float slab test uses SSE (part of x86-64's baseline); elsewhere, and for double, the same
 // test runs in plain code.
@@ -27,7 +28,6 @@
 #else
 #define PHOTON_BVH_SSE 0
 #endif
-#include "ray.hpp"
 
 namespace photon {
 
@@ -41,7 +41,8 @@ struct BvhConfig {
 /// BVH built as a binary tree by binned SAH (Wald 2007, "On fast Construction of SAH-based
 /// Bounding Volume Hierarchies"), then collapsed into a 4-wide tree for traversal (as Embree's
 /// BVH4 and tinybvh's BVH4_CPU): each node holds its four children's boxes side by side, so one
-/// loop, which the compiler vectorises, tests all four with the robust slab test of Ize (2013).
+/// SSE test (float; the same test in plain code for double) checks all four with the robust slab
+/// test of Ize (2013).
 /// Traversal is ordered by entry distance and skips stacked nodes the closest hit has passed.
 template <Scalar S> class Bvh {
 public:
@@ -67,7 +68,7 @@ public:
     /// Primitive ids in leaf order: leaf nodes refer to ranges of this array.
     [[nodiscard]] std::span<const std::uint32_t> primitive_indices() const noexcept { return prim_ids_; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return bounds_; }
-    /// Depth of the binary tree before collapsing (the 4-wide tree is about half as deep).
+    /// Depth of the binary tree before collapsing (the 4-wide tree is shallower).
     [[nodiscard]] std::size_t depth() const noexcept { return depth_; }
     [[nodiscard]] std::size_t memory_bytes() const noexcept {
         return nodes_.capacity() * sizeof(Node) + prim_ids_.capacity() * sizeof(std::uint32_t);
