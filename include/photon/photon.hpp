@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // photon: global illumination by photon mapping. This umbrella header includes every public
-// header; each can also be included on its own.
+// header but io/obj_mesh.hpp, which needs tinyobjloader (CMake target photon::obj); each can also
+// be included on its own.
 
 #include "config.hpp"
 #include "version.hpp"
@@ -62,5 +63,7 @@
 #include "film/film.hpp"
 #include "film/image_io.hpp"
 #include "film/tone_map.hpp"
+
+#include "memory/huge_page_allocator.hpp"
 
 #include "parallel/parallel_for.hpp"

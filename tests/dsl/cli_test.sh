@@ -66,6 +66,23 @@ if command -v povray >/dev/null 2>&1; then
     grep -q "Parse Warning" "$work/povray.log" && fail "povray warns on the exported file"
 fi
 
+# mesh { obj "file" }: read relative to the scene, rendered, exported as triangles POV-Ray reads.
+mkdir -p "$work/objscene/meshes"
+printf 'v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n' >"$work/objscene/meshes/tet.obj"
+printf 'camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 fade_distance 1 fade_power 2 }\nmesh { obj "meshes/tet.obj" pigment { rgb 0.7 } finish { ambient 0 diffuse 1 } }\n' >"$work/objscene/tet.pov"
+expect 0 "$photon" check "$work/objscene/tet.pov"
+grep -q "1: 1 mesh" "$work/out" || fail "check does not list the OBJ mesh"
+expect 0 "$photon" render "$work/objscene/tet.pov" -o "$work/tet.png" $tiny --mode rt
+expect 0 "$photon" export-pov "$work/objscene/tet.pov" -o "$work/tet_flat.pov"
+[ "$(grep -c 'triangle {' "$work/tet_flat.pov")" -eq 4 ] || fail "export-pov did not write the OBJ's 4 triangles"
+if command -v povray >/dev/null 2>&1; then
+    (cd "$work" && povray -D +W16 +H12 +O"$work/tet_flat.png" "$work/tet_flat.pov" >"$work/povray.log" 2>&1) ||
+        { fail "povray cannot read the exported OBJ mesh"; tail -5 "$work/povray.log"; }
+fi
+printf 'mesh { obj "none.obj" }\n' >"$work/objscene/missing.pov"
+expect 1 "$photon" check "$work/objscene/missing.pov"
+grep -q 'missing.pov:1:12: error: cannot find the mesh file "none.obj"' "$work/err" || fail "missing OBJ file not reported"
+
 # Ctrl-C: the first image is finished; an interrupted render of the same path goes next to it.
 cp "$work/cornell.png" "$work/keep.png"
 "$photon" render "$scenes/cornell.pov" -o "$work/cornell.png" --mode rt --width 1600 --height 1200 --spp 16 \

@@ -479,6 +479,72 @@ TEST_CASE("a mesh becomes one TriangleMesh", "[dsl][mesh]") {
     CHECK(mesh.bounds().max == Vec3<double>(1, 1, 1));
 }
 
+#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ
+namespace {
+/// Copies the OBJ fixture (a tetrahedron with corners (+-1, +-1, +-1)) into `dir` under `name`.
+void copy_fixture(const ScratchDir& dir, const std::string& name) {
+    std::filesystem::create_directories((dir.path() / name).parent_path());
+    std::filesystem::copy_file(std::string(PHOTON_TEST_DATA_DIR) + "/tetrahedron.obj", dir.path() / name);
+}
+}  // namespace
+
+TEST_CASE("mesh { obj \"file\" } reads an OBJ file relative to the scene file that names it", "[dsl][mesh][obj]") {
+    ScratchDir dir;
+    copy_fixture(dir, "meshes/tet.obj");
+    copy_fixture(dir, "lib/parts/tet2.obj");
+    dir.write("lib/part.inc", "#declare Part = mesh { obj \"parts/tet2.obj\" scale 2 }\n");  // next to lib/part.inc
+    const auto scene = dir.write("scene.pov", std::string(stage) +
+                                                  "#include \"lib/part.inc\"\n"
+                                                  "mesh { obj \"meshes/tet.obj\" pigment { rgb 0.5 } finish { ambient 0 diffuse 1 }\n"
+                                                  "       translate <0, 0, 10> }\n"
+                                                  "object { Part }\n");
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    const auto desc = dsl::parse_file(scene, po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto b = dsl::build<double>(desc, bo);
+    REQUIRE(warnings.size() == 1);  // Part has the default texture, with POV-Ray's ambient
+    CHECK_THAT(warnings[0].message, Catch::Contains("ambient 0.1"));
+    REQUIRE(b.scene.objects().size() == 2);
+    const auto& mesh = std::get<TriangleMesh<double>>(b.scene.objects()[0].shape);
+    CHECK(mesh.triangle_count() == 4);
+    CHECK(mesh.bounds().min == Vec3<double>(-1, -1, 9));
+    CHECK(mesh.bounds().max == Vec3<double>(1, 1, 11));
+    CHECK(b.scene.material_of(0).diffuse() == Rgb<double>(0.5));
+    CHECK(std::get<TriangleMesh<double>>(b.scene.objects()[1].shape).bounds().max == Vec3<double>(2));
+    // The scene traces: on the z axis the tetrahedron spans z in [-1, 1], so [9, 11] moved.
+    const auto hit = b.scene.intersect({{0, 0, 5}, {0, 0, 1}});
+    REQUIRE(hit);
+    CHECK(hit->hit.t == Approx(4));
+    CHECK(hit->object == 0);
+
+    // Errors point at the file name in the scene, and name the OBJ file's line.
+    auto error_in = [&](const std::string& text) {
+        const auto f = dir.write("bad.pov", text);
+        try {
+            (void)dsl::parse_file(f);
+        } catch (const dsl::Error& e) {
+            return std::to_string(e.location().line) + ":" + std::to_string(e.location().column) + ": " + e.message();
+        }
+        return std::string("no error");
+    };
+    CHECK(error_in("\nmesh { obj \"meshes/none.obj\" }") ==
+          "2:12: cannot find the mesh file \"meshes/none.obj\" (looked for " +
+              (dir.path() / "meshes/none.obj").lexically_normal().string() + ")");
+    dir.write("meshes/bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+    CHECK_THAT(error_in("mesh { obj \"meshes/bad.obj\" }"),
+               Catch::StartsWith("1:12: cannot read the mesh: ") &&
+                   Catch::EndsWith("meshes/bad.obj:4: the face refers to vertex 4, but the file has 3 vertices before it"));
+    dir.write("meshes/empty.obj", "v 0 0 0\n");
+    CHECK_THAT(error_in("mesh { obj \"meshes/empty.obj\" }"), Catch::EndsWith("meshes/empty.obj has no faces"));
+    CHECK(error_in("mesh { obj meshes }") == "1:12: expected a file name in double quotes after `obj`, found `meshes`");
+    CHECK(error_in("mesh { pigment { rgb 1 } }") ==
+          "1:8: expected `triangle` or `obj \"file.obj\"` in `mesh`, found `pigment`");
+}
+#endif
+
 TEST_CASE("#default changes the texture of objects written after it", "[dsl][texture]") {
     const auto b = built(std::string(stage) +
                          "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 } }\n"

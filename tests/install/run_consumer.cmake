@@ -14,6 +14,7 @@ set(consumer ${SOURCE_DIR}/tests/install/consumer)
 step(${CMAKE_COMMAND} -S ${consumer} -B ${WORK_DIR}/subdir -DCMAKE_BUILD_TYPE=Release -DPHOTON_SOURCE_DIR=${SOURCE_DIR})
 step(${CMAKE_COMMAND} --build ${WORK_DIR}/subdir)
 step(${WORK_DIR}/subdir/consumer)
+step(${WORK_DIR}/subdir/consumer_obj ${SOURCE_DIR}/tests/data/tetrahedron.obj)
 
 # 2. install, then find_package
 step(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/photon -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_TESTS=OFF
@@ -22,3 +23,4 @@ step(${CMAKE_COMMAND} --install ${WORK_DIR}/photon)
 step(${CMAKE_COMMAND} -S ${consumer} -B ${WORK_DIR}/installed -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
 step(${CMAKE_COMMAND} --build ${WORK_DIR}/installed)
 step(${WORK_DIR}/installed/consumer)
+step(${WORK_DIR}/installed/consumer_obj ${SOURCE_DIR}/tests/data/tetrahedron.obj)

@@ -6,15 +6,28 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "../config.hpp"
+#include "../memory/huge_page_allocator.hpp"
 #include "bbox.hpp"
 #include "ray.hpp"
+
+// The float slab test uses SSE (part of x86-64's baseline); elsewhere, and for double, the same
+// test runs in plain code.
+#if defined(__SSE2__) || defined(_M_X64)
+#include <emmintrin.h>
+#define PHOTON_BVH_SSE 1
+#else
+#define PHOTON_BVH_SSE 0
+#endif
 
 namespace photon {
 
@@ -25,15 +38,24 @@ struct BvhConfig {
     float intersection_cost = 1.0f;  ///< cost of one primitive test relative to a node visit
 };
 
-/// Binary BVH, binned SAH build (Wald 2007, "On fast Construction of SAH-based Bounding Volume
-/// Hierarchies"), ordered stack traversal with the robust slab test of Ize (2013).
+/// BVH built as a binary tree by binned SAH (Wald 2007, "On fast Construction of SAH-based
+/// Bounding Volume Hierarchies"), then collapsed into a 4-wide tree for traversal (as Embree's
+/// BVH4 and tinybvh's BVH4_CPU): each node holds its four children's boxes side by side, so one
+/// SSE test (float; the same test in plain code for double) checks all four with the robust slab
+/// test of Ize (2013).
+/// Traversal is ordered by entry distance and skips stacked nodes the closest hit has passed.
 template <Scalar S> class Bvh {
 public:
-    struct Node {
-        BBox<S> bounds;
-        std::uint32_t first = 0;  ///< leaf: first index into primitive_indices(); inner: left child
-        std::uint32_t count = 0;  ///< primitives in a leaf; 0 marks an inner node (right = first + 1)
-        [[nodiscard]] bool is_leaf() const noexcept { return count != 0; }
+    static constexpr int width = 4;
+    /// Up to four children. A child is an inner node (count 0), a leaf (a range of
+    /// primitive_indices()) or an unused slot (an empty box, which no ray enters).
+    struct alignas(64) Node {
+        std::array<std::array<S, width>, 3> min, max;  ///< [axis][child]: structure of arrays
+        std::array<std::uint32_t, width> first{};      ///< leaf: first index into primitive_indices(); inner: node index
+        std::array<std::uint32_t, width> count{};      ///< primitives in a leaf child; 0 for an inner child or unused slot
+        [[nodiscard]] BBox<S> child_bounds(int c) const noexcept {
+            return {{min[0][c], min[1][c], min[2][c]}, {max[0][c], max[1][c], max[2][c]}};
+        }
     };
 
     Bvh() = default;
@@ -41,10 +63,12 @@ public:
     Bvh(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config = {});
 
     [[nodiscard]] bool empty() const noexcept { return nodes_.empty(); }
+    /// The 4-wide nodes; nodes()[0] is the root.
     [[nodiscard]] std::span<const Node> nodes() const noexcept { return nodes_; }
     /// Primitive ids in leaf order: leaf nodes refer to ranges of this array.
     [[nodiscard]] std::span<const std::uint32_t> primitive_indices() const noexcept { return prim_ids_; }
-    [[nodiscard]] BBox<S> bounds() const noexcept { return nodes_.empty() ? BBox<S>{} : nodes_[0].bounds; }
+    [[nodiscard]] BBox<S> bounds() const noexcept { return bounds_; }
+    /// Depth of the binary tree before collapsing (the 4-wide tree is shallower).
     [[nodiscard]] std::size_t depth() const noexcept { return depth_; }
     [[nodiscard]] std::size_t memory_bytes() const noexcept {
         return nodes_.capacity() * sizeof(Node) + prim_ids_.capacity() * sizeof(std::uint32_t);
@@ -56,48 +80,102 @@ public:
     template <class TestFn> bool intersect(Ray<S>& ray, TestFn&& test) const;
     /// Any-hit traversal: stops at the first primitive for which `test` returns true.
     template <class TestFn> bool any_hit(const Ray<S>& ray, TestFn&& test) const;
+    /// Calls `visit(leaf_position)` for every primitive in a leaf whose box overlaps `box`.
+    template <class VisitFn> void for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const;
 
 private:
+    struct BinaryNode {
+        BBox<S> bounds;
+        std::uint32_t first = 0;  ///< leaf: first index into prim_ids_; inner: left child (right = first + 1)
+        std::uint32_t count = 0;  ///< primitives in a leaf; 0 marks an inner node
+        [[nodiscard]] bool is_leaf() const noexcept { return count != 0; }
+    };
     struct Bin {
         BBox<S> bounds;
         std::uint32_t count = 0;
     };
-    void build(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config);
+    /// A subtree waiting on the traversal stack: a node or a leaf, and where the ray enters it.
+    struct StackEntry {
+        std::uint32_t first, count;
+        S t;
+    };
+    std::vector<BinaryNode> build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
+                                         BvhConfig config);
+    void collapse(const std::vector<BinaryNode>& binary);
 
     static constexpr std::uint32_t forced_median_depth = 64;
-    static constexpr std::size_t stack_size = 128;  // > forced_median_depth + log2(2^32)
+    // The binary depth stays below forced_median_depth + log2(2^32) + 1; each 4-wide level
+    // pushes at most three entries.
+    static constexpr std::size_t stack_size = 3 * (forced_median_depth + 33) + 1;
 
-    std::vector<Node> nodes_;
+    std::vector<Node, HugePageAllocator<Node>> nodes_;
+    BBox<S> bounds_;
     std::vector<std::uint32_t> prim_ids_;
     std::size_t depth_ = 0;
 };
 
 namespace detail {
 
-/// Precomputed ray data for slab tests.
+/// Precomputed ray data for slab tests: the inverse direction and its signs, once per ray.
 template <Scalar S> struct SlabRay {
     Vec3<S> origin, inv_dir;
-    std::array<int, 3> negative;
+    std::array<bool, 3> negative;
+#if PHOTON_BVH_SSE
+    // Each coordinate repeated four times, for the SSE path (float only).
+    alignas(16) std::array<std::array<float, 4>, 3> origin4, inv_dir4;
+#endif
+
     explicit SlabRay(const Ray<S>& ray) noexcept : origin(ray.origin) {
         for (int a = 0; a < 3; ++a) {
             inv_dir[a] = S(1) / ray.direction[a];  // +-inf for zero components is intended
-            negative[a] = ray.direction[a] < S(0) ? 1 : 0;
+            negative[a] = std::signbit(ray.direction[a]);  // -0 too, so that it pairs with -inf
+#if PHOTON_BVH_SSE
+            if constexpr (std::is_same_v<S, float>) origin4[a].fill(origin[a]), inv_dir4[a].fill(inv_dir[a]);
+#endif
         }
     }
-    /// Entry distance into `b` if the ray overlaps it within (0, t_max), else +inf. The exit is
-    /// widened by 1 + 2 gamma(3) so that rounding never culls a box the ray grazes (Ize 2013).
-    [[nodiscard]] S enter(const BBox<S>& b, S t_max) const noexcept {
+
+    /// Tests the ray against the four boxes of `node` within (0, t_max). Returns a bit mask of the
+    /// boxes it enters and writes their entry distances to `t_enter`. The exit is widened by
+    /// 1 + 2 gamma(3) so that rounding never culls a box the ray grazes (Ize 2013).
+    template <class Node>
+    [[nodiscard]] PHOTON_FORCEINLINE unsigned enter(const Node& node, S t_max, std::array<S, 4>& t_enter) const noexcept {
         constexpr S widen = S(1) + S(6) * std::numeric_limits<S>::epsilon();
-        const Vec3<S>* bounds[2] = {&b.min, &b.max};
-        S t0 = S(0), t1 = t_max;
-        for (int a = 0; a < 3; ++a) {
-            const S near_t = ((*bounds[negative[a]])[a] - origin[a]) * inv_dir[a];
-            const S far_t = ((*bounds[1 - negative[a]])[a] - origin[a]) * inv_dir[a] * widen;
-            // NaN (0 * inf, a ray in a slab's plane) must not cull: the comparisons keep t0/t1.
-            t0 = near_t > t0 ? near_t : t0;
-            t1 = far_t < t1 ? far_t : t1;
+#if PHOTON_BVH_SSE
+        if constexpr (std::is_same_v<S, float>) {
+            __m128 t0 = _mm_setzero_ps(), t1 = _mm_set1_ps(t_max);
+            for (int a = 0; a < 3; ++a) {
+                const __m128 o = _mm_load_ps(origin4[a].data()), inv = _mm_load_ps(inv_dir4[a].data());
+                const __m128 near_t = _mm_mul_ps(_mm_sub_ps(_mm_load_ps((negative[a] ? node.max : node.min)[a].data()), o), inv);
+                const __m128 far_t = _mm_mul_ps(
+                    _mm_mul_ps(_mm_sub_ps(_mm_load_ps((negative[a] ? node.min : node.max)[a].data()), o), inv),
+                    _mm_set1_ps(widen));
+                // maxps/minps return their second operand when either is NaN (0 * inf, a ray in a
+                // slab's plane), so NaN never culls, as in the scalar code below.
+                t0 = _mm_max_ps(near_t, t0);
+                t1 = _mm_min_ps(far_t, t1);
+            }
+            _mm_storeu_ps(t_enter.data(), t0);
+            return static_cast<unsigned>(_mm_movemask_ps(_mm_cmple_ps(t0, t1)));
         }
-        return t0 <= t1 ? t0 : std::numeric_limits<S>::infinity();
+#endif
+        std::array<S, 4> t0{}, t1;
+        t1.fill(t_max);
+        for (int a = 0; a < 3; ++a) {
+            const auto& near_side = negative[a] ? node.max[a] : node.min[a];
+            const auto& far_side = negative[a] ? node.min[a] : node.max[a];
+            for (int c = 0; c < 4; ++c) {
+                const S near_t = (near_side[c] - origin[a]) * inv_dir[a];
+                const S far_t = (far_side[c] - origin[a]) * inv_dir[a] * widen;
+                // NaN (0 * inf, a ray in a slab's plane) must not cull: the comparisons keep t0/t1.
+                t0[c] = near_t > t0[c] ? near_t : t0[c];
+                t1[c] = far_t < t1[c] ? far_t : t1[c];
+            }
+        }
+        unsigned mask = 0;
+        for (int c = 0; c < 4; ++c) mask |= (t0[c] <= t1[c] ? 1u : 0u) << c;
+        t_enter = t0;
+        return mask;
     }
 };
 
@@ -107,22 +185,23 @@ template <Scalar S>
 Bvh<S>::Bvh(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config) {
     PHOTON_ASSERT(boxes.size() == centers.size());
     PHOTON_ASSERT(boxes.size() < std::numeric_limits<std::uint32_t>::max());
-    build(boxes, centers, config);
+    collapse(build_binary(boxes, centers, config));
 }
 
 template <Scalar S>
-void Bvh<S>::build(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config) {
+auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config)
+    -> std::vector<BinaryNode> {
     const std::size_t n = boxes.size();
-    nodes_.clear();
+    std::vector<BinaryNode> nodes;
     prim_ids_.resize(n);
     std::iota(prim_ids_.begin(), prim_ids_.end(), 0u);
-    if (n == 0) return;
+    if (n == 0) return nodes;
     const unsigned bin_count = std::max(2u, config.bins);
     const unsigned max_leaf = std::max(1u, config.max_leaf_size);
-    nodes_.reserve(2 * n);
-    nodes_.push_back({});
-    nodes_[0].first = 0;
-    nodes_[0].count = static_cast<std::uint32_t>(n);
+    nodes.reserve(2 * n);
+    nodes.push_back({});
+    nodes[0].first = 0;
+    nodes[0].count = static_cast<std::uint32_t>(n);
 
     struct Task {
         std::uint32_t node, depth;
@@ -135,7 +214,7 @@ void Bvh<S>::build(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> cent
         const Task task = stack.back();
         stack.pop_back();
         depth_ = std::max<std::size_t>(depth_, task.depth);
-        Node& node = nodes_[task.node];
+        BinaryNode& node = nodes[task.node];
         const std::uint32_t begin = node.first, count = node.count, end = begin + count;
 
         BBox<S> box, centroid_box;
@@ -206,14 +285,64 @@ void Bvh<S>::build(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> cent
             continue;  // stays a leaf
         }
 
-        const auto left = static_cast<std::uint32_t>(nodes_.size());
-        nodes_.push_back({BBox<S>{}, begin, mid - begin});
-        nodes_.push_back({BBox<S>{}, mid, end - mid});
-        Node& parent = nodes_[task.node];  // push_back may have moved the array
+        const auto left = static_cast<std::uint32_t>(nodes.size());
+        nodes.push_back({BBox<S>{}, begin, mid - begin});
+        nodes.push_back({BBox<S>{}, mid, end - mid});
+        BinaryNode& parent = nodes[task.node];  // push_back may have moved the array
         parent.first = left;
         parent.count = 0;
         stack.push_back({left + 1, task.depth + 1});
         stack.push_back({left, task.depth + 1});
+    }
+    return nodes;
+}
+
+template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary) {
+    nodes_.clear();
+    if (binary.empty()) return;
+    bounds_ = binary[0].bounds;
+    // Each 4-wide node takes a binary node's children, then repeatedly opens its largest inner
+    // child (by surface area, the one rays reach most often) until it has four.
+    nodes_.reserve(binary.size() / 3 + 1);
+    nodes_.push_back({});
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> work{{0u, 0u}};  // (binary node, wide node)
+    while (!work.empty()) {
+        const auto [from, to] = work.back();
+        work.pop_back();
+        std::array<std::uint32_t, width> kids{};
+        int n = 0;
+        if (binary[from].is_leaf()) {
+            kids[n++] = from;  // a root that is a leaf
+        } else {
+            kids[n++] = binary[from].first;
+            kids[n++] = binary[from].first + 1;
+            while (n < width) {
+                int open = -1;
+                S largest = -1;
+                for (int i = 0; i < n; ++i)
+                    if (!binary[kids[i]].is_leaf() && binary[kids[i]].bounds.half_area() > largest)
+                        open = i, largest = binary[kids[i]].bounds.half_area();
+                if (open < 0) break;
+                const std::uint32_t inner = kids[open];
+                kids[open] = binary[inner].first;
+                kids[n++] = binary[inner].first + 1;
+            }
+        }
+        Node node;
+        for (int c = 0; c < width; ++c) {
+            const BBox<S> b = c < n ? binary[kids[c]].bounds : BBox<S>{};  // unused: empty box
+            for (int a = 0; a < 3; ++a) node.min[a][c] = b.min[a], node.max[a][c] = b.max[a];
+            if (c >= n) continue;
+            if (binary[kids[c]].is_leaf()) {
+                node.first[c] = binary[kids[c]].first;
+                node.count[c] = binary[kids[c]].count;
+            } else {
+                node.first[c] = static_cast<std::uint32_t>(nodes_.size());
+                nodes_.push_back({});
+                work.push_back({kids[c], node.first[c]});
+            }
+        }
+        nodes_[to] = node;
     }
     nodes_.shrink_to_fit();
 }
@@ -223,38 +352,39 @@ template <class TestFn>
 bool Bvh<S>::intersect(Ray<S>& ray, TestFn&& test) const {
     if (nodes_.empty()) return false;
     const detail::SlabRay<S> slab(ray);
-    if (slab.enter(nodes_[0].bounds, ray.t_max) == std::numeric_limits<S>::infinity()) return false;
-    std::array<std::uint32_t, stack_size> stack;
+    std::array<StackEntry, stack_size> stack;
     std::size_t top = 0;
-    std::uint32_t current = 0;
+    StackEntry current{0, 0, S(0)};
     bool found = false;
     for (;;) {
-        const Node& node = nodes_[current];
-        if (node.is_leaf()) {
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) found |= test(i, ray);
+        if (current.count == 0) {
+            const Node& node = nodes_[current.first];
+            std::array<S, 4> t;
+            unsigned mask = slab.enter(node, ray.t_max, t);
+            if (mask != 0) {
+                // The children entered, farthest first: all but the nearest go on the stack.
+                std::array<StackEntry, width> hits;
+                int n = 0;
+                for (; mask != 0; mask &= mask - 1) {
+                    const int c = std::countr_zero(mask);
+                    StackEntry e{node.first[c], node.count[c], t[c]};
+                    int i = n++;
+                    for (; i > 0 && hits[i - 1].t < e.t; --i) hits[i] = hits[i - 1];
+                    hits[i] = e;
+                }
+                PHOTON_ASSERT(top + std::size_t(n - 1) <= stack.size());
+                for (int i = 0; i + 1 < n; ++i) stack[top++] = hits[i];
+                current = hits[n - 1];
+                continue;
+            }
         } else {
-            const std::uint32_t left = node.first, right = node.first + 1;
-            const S t_left = slab.enter(nodes_[left].bounds, ray.t_max);
-            const S t_right = slab.enter(nodes_[right].bounds, ray.t_max);
-            const bool hit_left = t_left != std::numeric_limits<S>::infinity();
-            const bool hit_right = t_right != std::numeric_limits<S>::infinity();
-            if (hit_left && hit_right) {
-                const bool left_first = t_left <= t_right;
-                PHOTON_ASSERT(top < stack.size());
-                stack[top++] = left_first ? right : left;
-                current = left_first ? left : right;
-                continue;
-            }
-            if (hit_left || hit_right) {
-                current = hit_left ? left : right;
-                continue;
-            }
+            for (std::uint32_t i = current.first; i < current.first + current.count; ++i) found |= test(i, ray);
         }
-        // Pop, skipping nodes now farther than the closest hit.
+        // Pop, skipping subtrees the ray enters beyond the closest hit found since.
         for (;;) {
             if (top == 0) return found;
             current = stack[--top];
-            if (slab.enter(nodes_[current].bounds, ray.t_max) != std::numeric_limits<S>::infinity()) break;
+            if (current.t <= ray.t_max) break;
         }
     }
 }
@@ -264,22 +394,46 @@ template <class TestFn>
 bool Bvh<S>::any_hit(const Ray<S>& ray, TestFn&& test) const {
     if (nodes_.empty()) return false;
     const detail::SlabRay<S> slab(ray);
+    std::array<StackEntry, stack_size> stack;
+    std::size_t top = 0;
+    stack[top++] = {0, 0, S(0)};
+    while (top > 0) {
+        const StackEntry e = stack[--top];
+        if (e.count != 0) {
+            for (std::uint32_t i = e.first; i < e.first + e.count; ++i)
+                if (test(i, ray)) return true;
+            continue;
+        }
+        const Node& node = nodes_[e.first];
+        std::array<S, 4> t;
+        PHOTON_ASSERT(top + width <= stack.size());
+        for (unsigned mask = slab.enter(node, ray.t_max, t); mask != 0; mask &= mask - 1) {
+            const int c = std::countr_zero(mask);
+            stack[top++] = {node.first[c], node.count[c], t[c]};
+        }
+    }
+    return false;
+}
+
+template <Scalar S>
+template <class VisitFn>
+void Bvh<S>::for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const {
+    if (nodes_.empty()) return;
     std::array<std::uint32_t, stack_size> stack;
     std::size_t top = 0;
     stack[top++] = 0;
     while (top > 0) {
         const Node& node = nodes_[stack[--top]];
-        if (slab.enter(node.bounds, ray.t_max) == std::numeric_limits<S>::infinity()) continue;
-        if (node.is_leaf()) {
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-                if (test(i, ray)) return true;
-        } else {
-            PHOTON_ASSERT(top + 2 <= stack.size());
-            stack[top++] = node.first + 1;
-            stack[top++] = node.first;
+        PHOTON_ASSERT(top + width <= stack.size());
+        for (int c = 0; c < width; ++c) {
+            if (!node.child_bounds(c).overlaps(box)) continue;  // also skips unused slots (empty boxes)
+            if (node.count[c] == 0) {
+                stack[top++] = node.first[c];
+                continue;
+            }
+            for (std::uint32_t i = node.first[c]; i < node.first[c] + node.count[c]; ++i) visit(i);
         }
     }
-    return false;
 }
 
 }  // namespace photon

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../memory/huge_page_allocator.hpp"
 #include "bvh.hpp"
 #include "triangle.hpp"
 
@@ -31,41 +32,49 @@ public:
     [[nodiscard]] BBox<S> bounds() const noexcept { return bvh_.bounds(); }
     [[nodiscard]] std::size_t memory_bytes() const noexcept {
         return positions_.capacity() * sizeof(Vec3<S>) + indices_.capacity() * sizeof(Index) +
-               tris_.capacity() * sizeof(PreparedTriangle) + bvh_.memory_bytes();
+               tris_.capacity() * sizeof(LeafTriangle) + bvh_.memory_bytes();
     }
 
+    /// Nearest hit with the watertight test: no ray passes between two triangles sharing an edge.
     [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept {
+        const detail::WatertightRay<S> prepared(ray);
         Ray<S> r = ray;
         std::uint32_t hit_index = 0;
-        const bool found = bvh_.intersect(r, [&](std::uint32_t i, Ray<S>& current) {
-            const PreparedTriangle& tri = tris_[i];
-            const auto t = detail::intersect_triangle(current, tri.v0, tri.e1, tri.e2);
-            if (!t) return false;
-            current.t_max = *t;
-            hit_index = i;
-            return true;
+        const bool found = detail::with_shear_axis(prepared, [&](auto kz) {
+            return bvh_.intersect(r, [&](std::uint32_t i, Ray<S>& current) {
+                const LeafTriangle& tri = tris_[i];
+                const auto t = detail::intersect_watertight<kz()>(prepared, current.t_max, tri.v[0], tri.v[1], tri.v[2]);
+                if (!t) return false;
+                current.t_max = *t;
+                hit_index = i;
+                return true;
+            });
         });
         if (!found) return std::nullopt;
-        const PreparedTriangle& tri = tris_[hit_index];
-        return Hit<S>{r.t_max, ray.at(r.t_max), detail::triangle_normal(tri.e1, tri.e2)};
+        const LeafTriangle& tri = tris_[hit_index];
+        return Hit<S>{r.t_max, ray.at(r.t_max), detail::triangle_normal(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0])};
     }
 
     [[nodiscard]] bool occluded(const Ray<S>& ray) const noexcept {
-        return bvh_.any_hit(ray, [&](std::uint32_t i, const Ray<S>& current) {
-            const PreparedTriangle& tri = tris_[i];
-            return detail::intersect_triangle(current, tri.v0, tri.e1, tri.e2).has_value();
+        const detail::WatertightRay<S> prepared(ray);
+        return detail::with_shear_axis(prepared, [&](auto kz) {
+            return bvh_.any_hit(ray, [&](std::uint32_t i, const Ray<S>& current) {
+                const LeafTriangle& tri = tris_[i];
+                return detail::intersect_watertight<kz()>(prepared, current.t_max, tri.v[0], tri.v[1], tri.v[2])
+                    .has_value();
+            });
         });
     }
 
 private:
-    /// Triangles stored in BVH leaf order with precomputed edges: one cache line per two tests.
-    struct PreparedTriangle {
-        Vec3<S> v0, e1, e2;
+    /// Vertices copied in BVH leaf order, so a leaf's triangles are contiguous in memory.
+    struct LeafTriangle {
+        std::array<Vec3<S>, 3> v;
     };
 
     std::vector<Vec3<S>> positions_;
     std::vector<Index> indices_;
-    std::vector<PreparedTriangle> tris_;
+    std::vector<LeafTriangle, HugePageAllocator<LeafTriangle>> tris_;
     Bvh<S> bvh_;
 };
 
@@ -94,15 +103,14 @@ TriangleMesh<S>::TriangleMesh(std::vector<Vec3<S>> positions, std::vector<Index>
     for (std::uint32_t id : bvh_.primitive_indices()) {
         const Index& idx = indices_[id];
         const Vec3<S>& v0 = positions_[idx[0]];
-        const Vec3<S> e1 = positions_[idx[1]] - v0, e2 = positions_[idx[2]] - v0;
         // A triangle without a normal (collinear or coincident vertices, or an area that
-        // underflows) gets zero edges: det is then exactly 0 and it is never hit. Its own edges
-        // would not do, as rounding in the triple product can make det non-zero for exactly
-        // collinear vertices, and the hit would carry a NaN normal.
-        if (detail::triangle_normal(e1, e2) == Vec3<S>(S(0)))
-            tris_.push_back({v0, Vec3<S>(S(0)), Vec3<S>(S(0))});
+        // underflows) collapses to one point: its edge functions are then exactly 0 and it is
+        // never hit. Its own vertices would not do, as rounding can make the determinant
+        // non-zero for exactly collinear vertices, and the hit would carry a NaN normal.
+        if (detail::triangle_normal(positions_[idx[1]] - v0, positions_[idx[2]] - v0) == Vec3<S>(S(0)))
+            tris_.push_back({{v0, v0, v0}});
         else
-            tris_.push_back({v0, e1, e2});
+            tris_.push_back({{v0, positions_[idx[1]], positions_[idx[2]]}});
     }
 }
 

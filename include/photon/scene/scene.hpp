@@ -4,7 +4,6 @@
 // parameters (a user's own Primitive joins by being listed), stored in a std::variant and
 // dispatched with std::visit; a BVH over the bounded ones answers ray queries.
 
-#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -203,33 +202,14 @@ void Scene<S, Shapes...>::occluders_in(const BBox<S>& region, std::vector<std::u
     ids.clear();
     for (std::uint32_t id : unbounded_)
         if (objects_[id].options.casts_shadow) ids.push_back(id);
-    const auto nodes = bvh_.nodes();
-    if (nodes.empty()) return;
     // Widened by a few ulps of the coordinates, so that rounding in a ray's points never puts
     // them outside; far below the offset that lifts shading points off their surface.
     const S pad = S(4) * std::numeric_limits<S>::epsilon() * region.magnitude();
     const BBox<S> query{region.min - pad, region.max + pad};
-    std::array<std::uint32_t, 64> stack;
-    std::size_t top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const auto& node = nodes[stack[--top]];
-        if (!node.bounds.overlaps(query)) continue;
-        if (node.is_leaf()) {
-            for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-                const std::uint32_t id = bvh_objects_[i];
-                if (objects_[id].options.casts_shadow && object_bounds(id).overlaps(query)) ids.push_back(id);
-            }
-        } else if (top + 2 <= stack.size()) {
-            stack[top++] = node.first + 1;
-            stack[top++] = node.first;
-        } else {  // deeper than a tree over scene objects gets: fall back to every object
-            ids.clear();
-            for (std::uint32_t id = 0; id < objects_.size(); ++id)
-                if (objects_[id].options.casts_shadow) ids.push_back(id);
-            return;
-        }
-    }
+    bvh_.for_each_overlapping(query, [&](std::uint32_t i) {
+        const std::uint32_t id = bvh_objects_[i];
+        if (objects_[id].options.casts_shadow && object_bounds(id).overlaps(query)) ids.push_back(id);
+    });
 }
 
 }  // namespace photon

@@ -28,6 +28,10 @@
 
 #include <photon/version.hpp>
 
+#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ  // set by the CMake target photon::obj
+#include <photon/io/obj_mesh.hpp>
+#endif
+
 #include "description.hpp"
 #include "diagnostics.hpp"
 #include "lexer.hpp"
@@ -1503,6 +1507,7 @@ private:
             obj.shape = parse_triangle_corners(kw);
         } else if (w == "mesh") {
             auto tris = std::make_shared<std::vector<std::array<Vector3, 3>>>();
+            if (peek().is_identifier("obj")) read_obj_mesh(next(), *tris);
             while (peek().is_identifier("triangle") || peek().is_identifier("smooth_triangle")) {
                 const Token tk = next();
                 const Nest inner(*this, tk.location);
@@ -1516,7 +1521,7 @@ private:
                     fail(tk.location, "the scene is too large: more than " + std::to_string(options_.max_primitives) +
                                           " objects and triangles");
             }
-            if (tris->empty()) fail_expected("`triangle` in `mesh`", peek());
+            if (tris->empty()) fail_expected("`triangle` or `obj \"file.obj\"` in `mesh`", peek());
             obj.primitives = tris->size();
             obj.shape = MeshShape{std::move(tris)};
         } else if (w == "union" || w == "merge") {
@@ -1567,6 +1572,42 @@ private:
                     "matrix, no_shadow)",
                     modifier_keywords);
         return obj;
+    }
+
+    /// `obj "file.obj"` in a mesh: the file's triangles, its path relative to the scene file
+    /// that names it. Needs photon::obj (tinyobjloader); errors point at the file name.
+    void read_obj_mesh(const Token& kw, std::vector<std::array<Vector3, 3>>& tris) {
+        const Token s = next();
+        if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `obj`", s);
+#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ
+        namespace fs = std::filesystem;
+        const fs::path name(s.text);
+        const fs::path path = name.is_absolute() ? name : files_.back().path.parent_path() / name;
+        std::error_code ec;
+        std::string display = path.lexically_normal().string();
+        if (const auto rel = fs::proximate(path, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
+            display = rel.lexically_normal().string();
+        if (!fs::is_regular_file(path, ec))
+            fail(s.location, "cannot find the mesh file \"" + s.text + "\" (looked for " + display + ")");
+        ObjTriangles<double> obj;
+        try {
+            obj = photon::detail::parse_obj_file<double>(path, display);
+        } catch (const ObjError& e) {
+            fail(s.location, std::string("cannot read the mesh: ") + e.what());
+        }
+        for (const std::string& w : obj.warnings) warn(s.location, display + ": " + w);
+        if (obj.triangles.empty()) fail(s.location, "the mesh file " + display + " has no faces");
+        if (obj.triangles.size() > options_.max_primitives)
+            fail(s.location, "the scene is too large: more than " + std::to_string(options_.max_primitives) +
+                                 " objects and triangles");
+        tris.reserve(obj.triangles.size());
+        for (const auto& t : obj.triangles)
+            tris.push_back({obj.positions[t[0]], obj.positions[t[1]], obj.positions[t[2]]});
+        (void)kw;
+#else
+        fail(kw.location, "this program was built without OBJ support: `mesh { obj \"" + s.text +
+                              "\" }` needs photon::obj (tinyobjloader)");
+#endif
     }
 
     TriangleShape parse_triangle_corners(const Token& kw) {
