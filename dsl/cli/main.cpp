@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // photon: renders POV-Ray scene files by photon mapping.
 //
-//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct ...]
+//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct|reference ...]
 //   photon check scene.pov
 //   photon export-pov scene.pov -o flat.pov
 
@@ -405,8 +405,9 @@ int main(int argc, char** argv) {
     render
         ->add_option("--mode", ro.mode,
                      "rt: ray tracing, direct light only; pm: photon mapping (global illumination); "
-                     "pm-direct: everything read from the photon maps")
-        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct"}));
+                     "pm-direct: everything read from the photon maps; reference: unbiased path tracing (slow, "
+                     "use many --spp)")
+        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct", "reference"}));
     render->add_option("--global-photons", ro.global_photons, "Photons emitted for the global map");
     render->add_option("--caustic-photons", ro.caustic_photons,
                        "Photons emitted towards mirrors and glass for the caustic map");
