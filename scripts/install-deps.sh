@@ -4,6 +4,7 @@
 #   install-deps.sh test     render + Catch2, POV-Ray (scene files are checked in it), clang for
 #                            the sanitizer build and the fuzzer
 #   install-deps.sh bench    test + Google Benchmark, nanoflann, Embree, OpenImageIO tools
+#   install-deps.sh compare  render + POV-Ray (scripts/compare-povray.sh)
 # Uses sudo only when not already root. Packages already present are not reinstalled.
 set -euo pipefail
 
@@ -12,11 +13,13 @@ purpose=${1:-render}
 render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev)
 test=("${render[@]}" catch2 povray clang libclang-rt-14-dev)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
+compare=("${render[@]}" povray)
 case "$purpose" in
   render) packages=("${render[@]}") ;;
   test) packages=("${test[@]}") ;;
   bench) packages=("${bench[@]}") ;;
-  *) echo "usage: $0 render|test|bench" >&2; exit 2 ;;
+  compare) packages=("${compare[@]}") ;;
+  *) echo "usage: $0 render|test|bench|compare" >&2; exit 2 ;;
 esac
 
 missing=()

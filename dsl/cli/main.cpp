@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // photon: renders POV-Ray scene files by photon mapping.
 //
-//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct ...]
+//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct|reference ...]
 //   photon check scene.pov
 //   photon export-pov scene.pov -o flat.pov
 

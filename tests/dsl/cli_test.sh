@@ -35,6 +35,8 @@ grep -q "global map" "$work/out" || fail "no statistics table"
 expect 0 "$photon" render "$scenes/room1.pov" -o "$work/room1.exr" $tiny --mode rt -q
 [ -s "$work/room1.exr" ] || fail "no room1.exr"
 [ -s "$work/out" ] && fail "-q printed something"
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/reference.exr" $tiny --mode reference
+grep -q "mode reference" "$work/out" || fail "--mode reference: not a reference render"
 
 printf 'sphere { <0,0,0>, -1 }\n' >"$work/bad.pov"
 expect 1 "$photon" render "$work/bad.pov" -o "$work/bad.png"
