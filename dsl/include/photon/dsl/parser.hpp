@@ -42,6 +42,10 @@ inline constexpr double photon_version = double(PHOTON_VERSION_MAJOR) + double(P
 struct ParseOptions {
     /// Searched for `#include` files after the including file's own directory.
     std::vector<std::filesystem::path> include_paths;
+    /// When set, `#include "name"` reads the text this returns instead of a file (nullopt: not
+    /// found), and the file system is never touched: a sandbox for untrusted scenes (the fuzzer)
+    /// and for scenes held in memory. Names are compared as written, for include loops.
+    std::function<std::optional<std::string>(const std::string& name)> read_include;
     /// Floats declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
     std::map<std::string, double> defines;
     DiagnosticSink diagnostics;
@@ -219,7 +223,8 @@ public:
     }
 
     SceneDescription parse_text(std::string text, std::string name) {
-        std::filesystem::path path = std::filesystem::current_path() / name;
+        std::filesystem::path path =
+            options_.read_include ? std::filesystem::path("<memory>") / name : std::filesystem::current_path() / name;
         auto file = std::make_shared<SourceFile>(SourceFile{std::move(name), std::move(text)});
         if (file->text.size() > options_.max_file_bytes) fail({file, 0, 0}, too_large_message(file->text.size()));
         return parse_main(std::move(file), std::move(path));
@@ -523,6 +528,10 @@ private:
             fail(s.location, "includes nested too deep: more than " + std::to_string(options_.max_include_depth) +
                                  " files open at once");
         namespace fs = std::filesystem;
+        if (options_.read_include) {
+            include_from_reader(s);
+            return;
+        }
         const fs::path name(s.text);
         std::vector<fs::path> candidates;
         if (name.is_absolute()) {
@@ -545,12 +554,7 @@ private:
             fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")");
         }
         const fs::path canonical = weakly_canonical(found);
-        for (std::size_t i = 0; i < files_.size(); ++i)
-            if (files_[i].path == canonical) {
-                std::string chain;
-                for (std::size_t j = i; j < files_.size(); ++j) chain += files_[j].lexer.file()->name + " includes ";
-                fail(s.location, "include loop: " + chain + "\"" + s.text + "\" again");
-            }
+        check_include_loop(canonical, s);
         (void)d;
         std::string display = found.lexically_normal().string();
         if (const auto rel = fs::proximate(found, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
@@ -559,6 +563,28 @@ private:
         scene_.files.push_back(file);
         files_.push_back({Lexer(file), canonical});
         scopes_.emplace_back();
+    }
+
+    /// `#include` through ParseOptions::read_include: the name alone identifies the file.
+    void include_from_reader(const Token& s) {
+        const std::filesystem::path key = std::filesystem::path("<memory>") / s.text;
+        check_include_loop(key, s);
+        std::optional<std::string> text = options_.read_include(s.text);
+        if (!text) fail(s.location, "cannot find the include file \"" + s.text + "\"");
+        if (text->size() > options_.max_file_bytes) fail(s.location, too_large_message(text->size()));
+        auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(*text)});
+        scene_.files.push_back(file);
+        files_.push_back({Lexer(file), key});
+        scopes_.emplace_back();
+    }
+
+    void check_include_loop(const std::filesystem::path& canonical, const Token& s) const {
+        for (std::size_t i = 0; i < files_.size(); ++i)
+            if (files_[i].path == canonical) {
+                std::string chain;
+                for (std::size_t j = i; j < files_.size(); ++j) chain += files_[j].lexer.file()->name + " includes ";
+                fail(s.location, "include loop: " + chain + "\"" + s.text + "\" again");
+            }
     }
 
     bool parse_condition(const Token& d, bool& guard) {
