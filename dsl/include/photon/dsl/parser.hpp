@@ -1927,7 +1927,8 @@ private:
                                      "` is photon's own setting and POV-Ray stops at it: write it inside "
                                      "`#ifdef (photon_version) ... #end`");
             auto count = [&](const std::string& what) { return std::uint64_t(parse_integer(what, 0, 1e12)); };
-            auto positive = [&](const std::string& what) { return unsigned(parse_integer(what, 1, 1e9)); };
+            // The library's bounds (photon::SettingsLimits), so that they are reported where written.
+            auto positive = [&](const std::string& what, double hi) { return unsigned(parse_integer(what, 1, hi)); };
             if (w == "assumed_gamma") {
                 SourceLocation at;
                 g.assumed_gamma = parse_float("`assumed_gamma`", &at);
@@ -1975,13 +1976,13 @@ private:
             } else if (w == "global_estimate" || w == "caustic_estimate") {
                 parse_estimate(t, w == "global_estimate" ? p.global_estimate : p.caustic_estimate);
             } else if (w == "max_photon_depth") {
-                p.max_photon_depth = positive("`max_photon_depth`");
+                p.max_photon_depth = positive("`max_photon_depth`", 1e4);
             } else if (w == "final_gather") {
                 p.final_gather = unsigned(parse_integer("`final_gather`", 0, 1e6));
             } else if (w == "shadow_samples") {
-                p.shadow_samples = positive("`shadow_samples`");
+                p.shadow_samples = positive("`shadow_samples`", 1e6);
             } else if (w == "samples_per_pixel") {
-                p.samples_per_pixel = positive("`samples_per_pixel`");
+                p.samples_per_pixel = positive("`samples_per_pixel`", 1e6);
             } else if (w == "irradiance_stride") {
                 p.irradiance_stride = unsigned(parse_integer("`irradiance_stride`", 0, 1e6));
             } else if (w == "irradiance_cache") {
