@@ -306,12 +306,11 @@ private:
 
     Token raw_token() {
         for (;;) {
-            if (++tokens_ > options_.max_tokens)
-                fail(files_.back().lexer.file()
-                         ? SourceLocation{files_.back().lexer.file(), files_.back().lexer.state().line,
-                                          files_.back().lexer.state().column}
-                         : SourceLocation{},
+            if (++tokens_ > options_.max_tokens) {
+                const Lexer& lexer = files_.back().lexer;
+                fail({lexer.file(), lexer.state().line, lexer.state().column},
                      "the scene is too long: more than " + std::to_string(options_.max_tokens) + " tokens read");
+            }
             Token t = files_.back().lexer.next();
             if (t.kind != TokenKind::end_of_file) return t;
             if (!conds_.empty() && conds_.back().file_depth == files_.size()) {
@@ -1078,9 +1077,12 @@ private:
     std::int64_t parse_integer(const std::string& what, double lo, double hi) {
         SourceLocation at;
         const double v = parse_float(what, &at);
+        // Whole numbers in full (1000000, not 1e+06), so the bound reads as it would be written.
+        auto whole = [](double x) {
+            return x == std::floor(x) && std::abs(x) < 1e15 ? std::to_string(std::int64_t(x)) : format_number(x);
+        };
         if (!(v >= lo && v <= hi))
-            fail(at, what + " must be a whole number from " + format_number(lo) + " to " + format_number(hi) +
-                         ", found " + format_number(v));
+            fail(at, what + " must be a whole number from " + whole(lo) + " to " + whole(hi) + ", found " + whole(v));
         return std::int64_t(v);
     }
     double parse_nonnegative(const std::string& what) {
