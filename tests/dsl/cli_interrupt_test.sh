@@ -11,8 +11,11 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # interrupt OUTPUT: starts a long render to OUTPUT, sends SIGINT once the image pass has reported
 # progress (so the handler is installed, whatever the build's speed), and returns its exit status.
+# (A shell reports death by SIGINT as 130 too: the PARTIAL message tells the two apart.)
 interrupt() {
-    "$photon" render "$scenes/cornell.pov" -o "$1" --mode rt --width 800 --height 600 --spp 16 \
+    rm -f "$work/err"  # a fresh file: the previous run's progress must not trigger this one
+    : >"$work/err"
+    "$photon" render "$scenes/cornell.pov" -o "$1" --mode rt --width 800 --height 600 --spp 64 \
         --shadow-samples 4 --no-stats >"$work/out" 2>"$work/err" &
     pid=$!
     tries=0
@@ -51,6 +54,7 @@ cp "$work/done.png" "$work/keep.png"
 interrupt "$work/done.png"
 status=$?
 [ $status -eq 130 ] || { fail "interrupted render: exit status $status, expected 130"; cat "$work/err"; }
+grep -q "PARTIAL" "$work/err" || fail "partial image not reported (killed before the handler was installed?)"
 cmp -s "$work/done.png" "$work/keep.png" || fail "the finished image was replaced by a partial one"
 [ -s "$work/done.partial.png" ] || fail "no done.partial.png"
 partial_is "$work/done.partial.png" true
