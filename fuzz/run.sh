@@ -19,4 +19,4 @@ mkdir -p "$work/corpus" "$work/artifacts"
     echo "fuzz/run.sh: the fuzzer failed (exit status $status); full log in $work/fuzz.log, input in $work/artifacts/"
     exit 1
 }
-grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units" "$work/fuzz.log"
+grep -E "^#[0-9]+[[:space:]]+DONE|stat::number_of_executed_units" "$work/fuzz.log"
