@@ -254,7 +254,7 @@ TEST_CASE("bounds: nesting, file size, loops, tokens and scene size give errors,
           "[dsl][errors]") {
     const std::string deep = "sphere { 0, " + std::string(300, '(') + "1" + std::string(300, ')') + " }";
     CHECK_THAT(error_of(deep),
-               Contains("nesting too deep: more than 128 blocks, objects or parentheses inside each other"));
+               Contains("nesting too deep: more than 128 blocks, objects, parentheses or directives inside each other"));
     std::string unions;
     for (int i = 0; i < 200; ++i) unions += "union { ";
     unions += "sphere { 0, 1 }";
@@ -340,6 +340,16 @@ TEST_CASE("inputs found by the fuzzer end in clear errors", "[dsl][errors][fuzz]
         INFO("max_tokens " << limit);
         CHECK_THAT(error_of(text, o), Contains("the scene is too long: more than " + std::to_string(limit)));
     }
+    o.max_tokens = 200'000;
+    // `#if#end` inside a #while: the #end ran inside the condition of the #if, closed the loop and
+    // re-read its condition, one level deeper on the stack per iteration, until the stack overflowed.
+    CHECK(error_of(read("directive_in_while_condition.pov"), o) == "4:6: expected `(` after `#if`, found `#end`");
+    CHECK(error_of("#declare N = 0;\n#while (N < 3) #if #end\n#end\nsphere { 0, 1 }") ==
+          "2:20: expected `(` after `#if`, found `#end`");
+    // Directives taking directives as arguments: bounded like any nesting.
+    std::string undefs;
+    for (int i = 0; i < 5000; ++i) undefs += "#undef ";
+    CHECK_THAT(error_of(undefs + "x\nsphere { 0, 1 }"), Contains("nesting too deep: more than 128"));
 }
 
 TEST_CASE("warnings go to the diagnostics sink with their locations", "[dsl][errors]") {

@@ -251,7 +251,7 @@ private:
         Nest(Parser& parser, const SourceLocation& at) : p(parser) {
             if (++p.depth_ > p.options_.max_nesting)
                 p.fail(at, "nesting too deep: more than " + std::to_string(p.options_.max_nesting) +
-                               " blocks, objects or parentheses inside each other");
+                               " blocks, objects, parentheses or directives inside each other");
         }
         ~Nest() { --p.depth_; }
         Nest(const Nest&) = delete;
@@ -383,6 +383,10 @@ private:
     }
 
     void directive(const Token& d) {
+        // A directive's arguments may start another directive (`#undef #undef ...`, a `#while`
+        // whose `#end` re-reads the condition); bounded like any nesting, so that no chain of
+        // them can overflow the stack.
+        const Nest nest(*this, d.location);
         ++statements_;
         const std::string& name = d.text;
         if (name == "declare" || name == "local") {
@@ -586,7 +590,10 @@ private:
             }
     }
 
+    /// `( expression )` after #if, #elseif or #while. Directives are not run inside it (as in
+    /// POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's condition.
     bool parse_condition(const Token& d, bool& guard) {
+        ++suppress_;
         expect_symbol("(", "after `#" + d.text + "`");
         const bool saved = mentions_photon_version_;
         mentions_photon_version_ = false;
@@ -595,13 +602,16 @@ private:
         guard = mentions_photon_version_;
         mentions_photon_version_ = saved;
         expect_symbol(")", "to close the condition of `#" + d.text + "`");
+        --suppress_;
         return v != 0.0;
     }
     bool parse_defined_condition(const Token& d, bool negate, bool& guard) {
+        ++suppress_;
         expect_symbol("(", "after `#" + d.text + "`");
         const Token id = next();
         if (id.kind != TokenKind::identifier) fail_expected("an identifier in `#" + d.text + " ( )`", id);
         expect_symbol(")", "after the identifier of `#" + d.text + "`");
+        --suppress_;
         guard = id.text == "photon_version";
         return (lookup(id.text) != nullptr) != negate;
     }
