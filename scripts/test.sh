@@ -1,10 +1,33 @@
 #!/usr/bin/env bash
-# Builds everything and runs the whole test suite (Release build with assertions on in the tests).
+# Builds everything and runs the whole test suite three ways, stopping at the first failure:
+#   1. Release build (assertions on in the tests): BUILD (default build/)
+#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer: BUILD-asan
+#   3. the scene-language fuzzer for 60 s (clang, libFuzzer): BUILD-fuzz (fuzz/run.sh)
 # Installs what it needs first. Usage: scripts/test.sh [build-dir]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
+jobs=$(nproc)
 scripts/install-deps.sh test
+stamp() { echo "test.sh: $* ($SECONDS s)"; }
+
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
-cmake --build "$build" -j "$(nproc)"
-ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
+cmake --build "$build" -j "$jobs"
+ctest --test-dir "$build" --output-on-failure -j "$jobs"
+stamp "release suite passed"
+
+# -O1 keeps the instrumented build and run quick; -g1 (line tables) is enough for stack traces.
+# Left out: POV-Ray's own checks and the install test (it builds a separate consumer project
+# without the sanitizers), which run no instrumented photon code, and the examples (demos).
+cmake -S . -B "$build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    -DPHOTON_SANITIZE=ON -DPHOTON_BUILD_EXAMPLES=OFF
+cmake --build "$build-asan" -j "$jobs"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1 \
+UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --test-dir "$build-asan" --output-on-failure -j "$jobs" -LE "povray|install"
+stamp "sanitizer suite passed"
+
+CXX=clang++ cmake -S fuzz -B "$build-fuzz" -G Ninja
+cmake --build "$build-fuzz" -j "$jobs"
+fuzz/run.sh "$build-fuzz/parse_fuzzer" 60
+stamp "fuzzing passed"

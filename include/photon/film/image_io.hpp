@@ -8,11 +8,13 @@
 #include <OpenImageIO/imageio.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <fcntl.h>
 #include <unistd.h>
 #include <utility>
 #include <vector>
@@ -69,6 +71,15 @@ inline void check_writable_image_path(const std::filesystem::path& path) {
     if (fs::is_directory(path, ec)) throw ImageError(path.string() + ": is a directory");
     if (::access(dir.c_str(), W_OK) != 0)
         throw ImageError(path.string() + ": output directory '" + dir.string() + "' is not writable");
+    // access() says yes to root and knows nothing of read-only file systems: create and remove
+    // the kind of temporary file write_image will create.
+    const fs::path probe_file = detail::temporary_sibling(path);
+    const int fd = ::open(probe_file.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0)
+        throw ImageError(path.string() + ": cannot create a file in '" + dir.string() + "': " +
+                         std::generic_category().message(errno));
+    ::close(fd);
+    ::unlink(probe_file.c_str());
 }
 
 /// Writes `film` to `path` (format from the extension). Throws ImageError; on failure the file

@@ -11,6 +11,7 @@
 #include "../scene/camera.hpp"
 #include "../tracing/photon_tracer.hpp"
 #include "irradiance_cache_pass.hpp"
+#include "memory_budget.hpp"
 #include "path_tracer.hpp"
 #include "radiance.hpp"
 
@@ -186,6 +187,7 @@ template <class SceneT>
 [[nodiscard]] RenderResult render(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
                                   const RenderSettings& settings) {
     validate(settings);
+    check_memory(estimate_memory(settings, max_albedo(scene)), double(settings.memory_limit));
     const auto start = std::chrono::steady_clock::now();
     RenderResult result;
     RenderStats& stats = result.stats;

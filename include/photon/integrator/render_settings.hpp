@@ -70,6 +70,8 @@ struct RenderSettings {
 
     std::uint64_t seed = 1;
     unsigned threads = 0;  ///< 0: all hardware threads; the image does not depend on it
+    /// Bytes the render may plan to use (memory_budget.hpp); 0: the memory available when it starts.
+    std::uint64_t memory_limit = 0;
 
     /// Called from worker threads (serialised) with the phase and the fraction of it done.
     std::function<void(RenderPhase, double)> progress{};
@@ -78,14 +80,28 @@ struct RenderSettings {
     const std::atomic<bool>* cancel = nullptr;
 };
 
+/// Upper bounds of the settings (validate). Sample counts are rounded up to n x n grids, which must
+/// not overflow; the ray depth is a recursion depth, which must not overflow a thread's stack.
+struct SettingsLimits {
+    static constexpr unsigned max_samples = 1'000'000;  ///< per pixel, shadow rays, final-gather rays
+    static constexpr unsigned max_ray_depth = 256;      ///< POV-Ray's largest max_trace_level
+    static constexpr unsigned max_photon_depth = 10'000;
+};
+
 /// Throws std::invalid_argument naming the first setting out of range.
 inline void validate(const RenderSettings& s) {
     auto fail = [](const std::string& what) { throw std::invalid_argument("render settings: " + what); };
+    auto in_range = [&](unsigned v, unsigned hi, const char* what) {
+        if (v == 0 || v > hi) fail(std::string(what) + " must be from 1 to " + std::to_string(hi) + ", found " + std::to_string(v));
+    };
     if (s.width == 0 || s.height == 0) fail("width and height must be at least 1");
-    if (s.samples_per_pixel == 0) fail("samples per pixel must be at least 1");
-    if (s.max_ray_depth == 0) fail("max ray depth must be at least 1");
-    if (s.shadow_samples == 0) fail("shadow samples must be at least 1");
-    if (s.max_photon_depth == 0) fail("max photon depth must be at least 1");
+    in_range(s.samples_per_pixel, SettingsLimits::max_samples, "samples per pixel");
+    in_range(s.max_ray_depth, SettingsLimits::max_ray_depth, "max ray depth");
+    in_range(s.shadow_samples, SettingsLimits::max_samples, "shadow samples");
+    in_range(s.max_photon_depth, SettingsLimits::max_photon_depth, "max photon depth");
+    if (s.final_gather_rays > SettingsLimits::max_samples)
+        fail("final gather rays must be at most " + std::to_string(SettingsLimits::max_samples) + ", found " +
+             std::to_string(s.final_gather_rays));
     for (const EstimateSettings* e : {&s.global_estimate, &s.caustic_estimate}) {
         if (e->k == 0) fail("photons per estimate must be at least 1");
         if (!(e->max_radius > 0.0f) || !std::isfinite(e->max_radius)) fail("estimate radius must be positive");

@@ -46,6 +46,10 @@ inline constexpr double photon_version = double(PHOTON_VERSION_MAJOR) + double(P
 struct ParseOptions {
     /// Searched for `#include` files after the including file's own directory.
     std::vector<std::filesystem::path> include_paths;
+    /// When set, `#include "name"` reads the text this returns instead of a file (nullopt: not
+    /// found), and the file system is never touched: a sandbox for untrusted scenes (the fuzzer)
+    /// and for scenes held in memory. Names are compared as written, for include loops.
+    std::function<std::optional<std::string>(const std::string& name)> read_include;
     /// Floats declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
     std::map<std::string, double> defines;
     DiagnosticSink diagnostics;
@@ -223,7 +227,8 @@ public:
     }
 
     SceneDescription parse_text(std::string text, std::string name) {
-        std::filesystem::path path = std::filesystem::current_path() / name;
+        std::filesystem::path path =
+            options_.read_include ? std::filesystem::path("<memory>") / name : std::filesystem::current_path() / name;
         auto file = std::make_shared<SourceFile>(SourceFile{std::move(name), std::move(text)});
         if (file->text.size() > options_.max_file_bytes) fail({file, 0, 0}, too_large_message(file->text.size()));
         return parse_main(std::move(file), std::move(path));
@@ -250,7 +255,7 @@ private:
         Nest(Parser& parser, const SourceLocation& at) : p(parser) {
             if (++p.depth_ > p.options_.max_nesting)
                 p.fail(at, "nesting too deep: more than " + std::to_string(p.options_.max_nesting) +
-                               " blocks, objects or parentheses inside each other");
+                               " blocks, objects, parentheses or directives inside each other");
         }
         ~Nest() { --p.depth_; }
         Nest(const Nest&) = delete;
@@ -305,12 +310,11 @@ private:
 
     Token raw_token() {
         for (;;) {
-            if (++tokens_ > options_.max_tokens)
-                fail(files_.back().lexer.file()
-                         ? SourceLocation{files_.back().lexer.file(), files_.back().lexer.state().line,
-                                          files_.back().lexer.state().column}
-                         : SourceLocation{},
+            if (++tokens_ > options_.max_tokens) {
+                const Lexer& lexer = files_.back().lexer;
+                fail({lexer.file(), lexer.state().line, lexer.state().column},
                      "the scene is too long: more than " + std::to_string(options_.max_tokens) + " tokens read");
+            }
             Token t = files_.back().lexer.next();
             if (t.kind != TokenKind::end_of_file) return t;
             if (!conds_.empty() && conds_.back().file_depth == files_.size()) {
@@ -383,6 +387,10 @@ private:
     }
 
     void directive(const Token& d) {
+        // A directive's arguments may start another directive (`#undef #undef ...`, a `#while`
+        // whose `#end` re-reads the condition); bounded like any nesting, so that no chain of
+        // them can overflow the stack.
+        const Nest nest(*this, d.location);
         ++statements_;
         const std::string& name = d.text;
         if (name == "declare" || name == "local") {
@@ -527,6 +535,10 @@ private:
             fail(s.location, "includes nested too deep: more than " + std::to_string(options_.max_include_depth) +
                                  " files open at once");
         namespace fs = std::filesystem;
+        if (options_.read_include) {
+            include_from_reader(s);
+            return;
+        }
         const fs::path name(s.text);
         std::vector<fs::path> candidates;
         if (name.is_absolute()) {
@@ -549,12 +561,7 @@ private:
             fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")");
         }
         const fs::path canonical = weakly_canonical(found);
-        for (std::size_t i = 0; i < files_.size(); ++i)
-            if (files_[i].path == canonical) {
-                std::string chain;
-                for (std::size_t j = i; j < files_.size(); ++j) chain += files_[j].lexer.file()->name + " includes ";
-                fail(s.location, "include loop: " + chain + "\"" + s.text + "\" again");
-            }
+        check_include_loop(canonical, s);
         (void)d;
         std::string display = found.lexically_normal().string();
         if (const auto rel = fs::proximate(found, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
@@ -565,7 +572,32 @@ private:
         scopes_.emplace_back();
     }
 
+    /// `#include` through ParseOptions::read_include: the name alone identifies the file.
+    void include_from_reader(const Token& s) {
+        const std::filesystem::path key = std::filesystem::path("<memory>") / s.text;
+        check_include_loop(key, s);
+        std::optional<std::string> text = options_.read_include(s.text);
+        if (!text) fail(s.location, "cannot find the include file \"" + s.text + "\"");
+        if (text->size() > options_.max_file_bytes) fail(s.location, too_large_message(text->size()));
+        auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(*text)});
+        scene_.files.push_back(file);
+        files_.push_back({Lexer(file), key});
+        scopes_.emplace_back();
+    }
+
+    void check_include_loop(const std::filesystem::path& canonical, const Token& s) const {
+        for (std::size_t i = 0; i < files_.size(); ++i)
+            if (files_[i].path == canonical) {
+                std::string chain;
+                for (std::size_t j = i; j < files_.size(); ++j) chain += files_[j].lexer.file()->name + " includes ";
+                fail(s.location, "include loop: " + chain + "\"" + s.text + "\" again");
+            }
+    }
+
+    /// `( expression )` after #if, #elseif or #while. Directives are not run inside it (as in
+    /// POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's condition.
     bool parse_condition(const Token& d, bool& guard) {
+        ++suppress_;
         expect_symbol("(", "after `#" + d.text + "`");
         const bool saved = mentions_photon_version_;
         mentions_photon_version_ = false;
@@ -574,13 +606,16 @@ private:
         guard = mentions_photon_version_;
         mentions_photon_version_ = saved;
         expect_symbol(")", "to close the condition of `#" + d.text + "`");
+        --suppress_;
         return v != 0.0;
     }
     bool parse_defined_condition(const Token& d, bool negate, bool& guard) {
+        ++suppress_;
         expect_symbol("(", "after `#" + d.text + "`");
         const Token id = next();
         if (id.kind != TokenKind::identifier) fail_expected("an identifier in `#" + d.text + " ( )`", id);
         expect_symbol(")", "after the identifier of `#" + d.text + "`");
+        --suppress_;
         guard = id.text == "photon_version";
         return (lookup(id.text) != nullptr) != negate;
     }
@@ -1056,9 +1091,12 @@ private:
     std::int64_t parse_integer(const std::string& what, double lo, double hi) {
         SourceLocation at;
         const double v = parse_float(what, &at);
+        // Whole numbers in full (1000000, not 1e+06), so the bound reads as it would be written.
+        auto whole = [](double x) {
+            return x == std::floor(x) && std::abs(x) < 1e15 ? std::to_string(std::int64_t(x)) : format_number(x);
+        };
         if (!(v >= lo && v <= hi))
-            fail(at, what + " must be a whole number from " + format_number(lo) + " to " + format_number(hi) +
-                         ", found " + format_number(v));
+            fail(at, what + " must be a whole number from " + whole(lo) + " to " + whole(hi) + ", found " + whole(v));
         return std::int64_t(v);
     }
     double parse_nonnegative(const std::string& what) {
@@ -1942,7 +1980,8 @@ private:
                                      "` is photon's own setting and POV-Ray stops at it: write it inside "
                                      "`#ifdef (photon_version) ... #end`");
             auto count = [&](const std::string& what) { return std::uint64_t(parse_integer(what, 0, 1e12)); };
-            auto positive = [&](const std::string& what) { return unsigned(parse_integer(what, 1, 1e9)); };
+            // The library's bounds (photon::SettingsLimits), so that they are reported where written.
+            auto positive = [&](const std::string& what, double hi) { return unsigned(parse_integer(what, 1, hi)); };
             if (w == "assumed_gamma") {
                 SourceLocation at;
                 g.assumed_gamma = parse_float("`assumed_gamma`", &at);
@@ -1990,13 +2029,13 @@ private:
             } else if (w == "global_estimate" || w == "caustic_estimate") {
                 parse_estimate(t, w == "global_estimate" ? p.global_estimate : p.caustic_estimate);
             } else if (w == "max_photon_depth") {
-                p.max_photon_depth = positive("`max_photon_depth`");
+                p.max_photon_depth = positive("`max_photon_depth`", 1e4);
             } else if (w == "final_gather") {
                 p.final_gather = unsigned(parse_integer("`final_gather`", 0, 1e6));
             } else if (w == "shadow_samples") {
-                p.shadow_samples = positive("`shadow_samples`");
+                p.shadow_samples = positive("`shadow_samples`", 1e6);
             } else if (w == "samples_per_pixel") {
-                p.samples_per_pixel = positive("`samples_per_pixel`");
+                p.samples_per_pixel = positive("`samples_per_pixel`", 1e6);
             } else if (w == "irradiance_stride") {
                 p.irradiance_stride = unsigned(parse_integer("`irradiance_stride`", 0, 1e6));
             } else if (w == "irradiance_cache") {
