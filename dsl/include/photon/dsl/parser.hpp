@@ -1643,6 +1643,7 @@ private:
             tris.push_back({obj.positions[t[0]], obj.positions[t[1]], obj.positions[t[2]]});
         (void)kw;
 #else
+        (void)tris;
         fail(kw.location, "this program was built without OBJ support: `mesh { obj \"" + s.text +
                               "\" }` needs photon::obj (tinyobjloader)");
 #endif
