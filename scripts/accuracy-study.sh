@@ -23,7 +23,7 @@ root=$PWD
 size=200x150
 reference_spp=8192
 threads=2
-build=build-accuracy
+build="build-accuracy"
 doc=docs/accuracy.md
 images=docs/images/accuracy
 usage() { sed -n '/^# Usage:/,/^# The renders/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
@@ -164,7 +164,7 @@ ax.set_title("Cornell box: error against time")
 ax.legend(fontsize=7); ax.grid(True, which="both", lw=0.3)
 fig.tight_layout(); fig.savefig(sys.argv[2])
 EOF
-  plot="![Error against wall time; rt lies off the scale of block RMSE](images/accuracy/error-vs-time.png)"
+  plot="![Error against wall time for every row, pixels and 8x8 blocks](images/accuracy/error-vs-time.png)"
 else
   echo "accuracy-study: /usr/bin/python3 has no matplotlib (scripts/install-deps.sh compare installs it); no plot"
 fi
