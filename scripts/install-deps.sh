@@ -4,7 +4,8 @@
 #   install-deps.sh test     render + Catch2, POV-Ray (scene files are checked in it), clang for
 #                            the sanitizer build and the fuzzer
 #   install-deps.sh bench    test + Google Benchmark, nanoflann, Embree, OpenImageIO tools
-#   install-deps.sh compare  render + POV-Ray (scripts/compare-povray.sh)
+#   install-deps.sh compare  render + POV-Ray (scripts/compare-povray.sh) and matplotlib for
+#                            Debian's /usr/bin/python3 (the plot of scripts/accuracy-study.sh)
 # Uses sudo only when not already root. Packages already present are not reinstalled.
 set -euo pipefail
 
@@ -13,7 +14,7 @@ purpose=${1:-render}
 render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev)
 test=("${render[@]}" catch2 povray clang libclang-rt-14-dev)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
-compare=("${render[@]}" povray)
+compare=("${render[@]}" povray python3-matplotlib)
 case "$purpose" in
   render) packages=("${render[@]}") ;;
   test) packages=("${test[@]}") ;;

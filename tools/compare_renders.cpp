@@ -3,7 +3,7 @@
 // POV-Ray in scripts/compare-povray.sh).
 //
 //   photon-compare SCENE.pov A.exr B.exr [--region NAME=X0,Y0,Z0,X1,Y1,Z1,AXIS]... [--side-by-side OUT.jpg]
-//                  [--mask OUT.png] [--summary OUT.tsv] [--exposure E] [--labels A,B]
+//                  [--mask OUT.png] [--summary OUT.tsv] [--exposure E] [--labels A,B] [--block N]
 //
 // Both images must hold linear radiance of the same size. Regions are pieces of surface named in
 // scene coordinates (an axis-aligned box and the direction the surface faces, e.g. the Cornell
@@ -12,6 +12,10 @@
 // own intersection code on the scene file, so no pixel rectangle needs maintaining by hand), and
 // so do its four neighbours: edges, anti-aliased silhouettes and whatever a mirror shows are left
 // out. Prints a Markdown table of mean radiance per region to standard output.
+//
+// --block N also measures the RMSE of the N x N block means (whole blocks only): per-pixel noise
+// averages away in a block, low-frequency bias and blotches do not. The summary line then gains
+// three fields: block RMSE, the largest |A / B - 1| of the regions' channel means, and that region.
 
 #include <CLI/CLI.hpp>
 
@@ -129,6 +133,22 @@ std::string fixed(double v, int digits) {
     return s.str();
 }
 
+/// RMSE over channels of the means of whole `n` x `n` blocks of A and B (same size).
+double block_rmse(const Film& a, const Film& b, unsigned n) {
+    double squared = 0.0;
+    std::size_t blocks = 0;
+    for (unsigned by = 0; by + n <= a.height(); by += n)
+        for (unsigned bx = 0; bx + n <= a.width(); bx += n) {
+            Rgb<double> d(0.0);
+            for (unsigned y = by; y < by + n; ++y)
+                for (unsigned x = bx; x < bx + n; ++x) d += Rgb<double>(a.at(x, y)) - Rgb<double>(b.at(x, y));
+            d /= double(n) * double(n);
+            squared += glm::dot(d, d);
+            ++blocks;
+        }
+    return std::sqrt(squared / (3.0 * double(blocks)));
+}
+
 std::string rgb_text(const Rgb<double>& c) {
     return "(" + fixed(c.x, 3) + ", " + fixed(c.y, 3) + ", " + fixed(c.z, 3) + ")";
 }
@@ -172,6 +192,7 @@ int main(int argc, char** argv) {
     std::string scene_file, a_file, b_file, side_file, mask_file, summary_file, labels = "photon,POV-Ray";
     std::vector<std::string> region_specs;
     float exposure = 1.0f;
+    unsigned block = 0;
     app.add_option("scene", scene_file, "The scene file both images render")->required()->check(CLI::ExistingFile);
     app.add_option("a", a_file, "First image (linear radiance, e.g. EXR)")->required()->check(CLI::ExistingFile);
     app.add_option("b", b_file, "Second image, the one ratios divide by")->required()->check(CLI::ExistingFile);
@@ -183,6 +204,8 @@ int main(int argc, char** argv) {
     app.add_option("--summary", summary_file, "Write rmse, psnr, mean A, mean B as one tab-separated line");
     app.add_option("--exposure", exposure, "Exposure of the side-by-side picture")->check(CLI::PositiveNumber);
     app.add_option("--labels", labels, "Names of A and B in the table (comma-separated)");
+    app.add_option("--block", block, "Also the RMSE of N x N block means; adds it and the worst region bias to --summary")
+        ->check(CLI::PositiveNumber);
     CLI11_PARSE(app, argc, argv);
 
     try {
@@ -197,6 +220,9 @@ int main(int argc, char** argv) {
             throw std::invalid_argument(a_file + " is " + std::to_string(a.width()) + "x" + std::to_string(a.height()) +
                                         " but " + b_file + " is " + std::to_string(b.width()) + "x" +
                                         std::to_string(b.height()));
+        if (block > std::min(a.width(), a.height()))
+            throw std::invalid_argument("--block " + std::to_string(block) + " is larger than the " +
+                                        std::to_string(a.width()) + "x" + std::to_string(a.height()) + " images");
         if (!a.all_finite_nonnegative() || !b.all_finite_nonnegative())
             throw std::invalid_argument("an image holds NaN, infinite or negative values");
 
@@ -240,10 +266,24 @@ int main(int argc, char** argv) {
                       << rgb_text(mb) << " | " << ratio_text(ma, mb) << " |\n";
         }
 
+        // The region whose mean is furthest from B's, as A / B - 1 of the channel means.
+        double worst_bias = 0.0;
+        std::string worst_region = "-";
+        for (std::size_t r = 0; r < regions.size(); ++r) {
+            const auto& acc = per_region[r];
+            const double mb = channel_mean(acc.b);
+            if (acc.pixels == 0 || !(mb > 0.0)) continue;
+            const double bias = channel_mean(acc.a) / mb - 1.0;
+            if (worst_region == "-" || std::abs(bias) > std::abs(worst_bias)) worst_bias = bias, worst_region = regions[r].name;
+        }
+        const double rmse_blocks = block > 0 ? block_rmse(a, b, block) : 0.0;
+
         if (!summary_file.empty()) {
             std::ofstream out(summary_file);
             out << fixed(rmse, 4) << '\t' << fixed(psnr, 2) << '\t' << fixed(channel_mean(mean_a), 4) << '\t'
-                << fixed(channel_mean(mean_b), 4) << '\n';
+                << fixed(channel_mean(mean_b), 4);
+            if (block > 0) out << '\t' << fixed(rmse_blocks, 4) << '\t' << fixed(worst_bias, 4) << '\t' << worst_region;
+            out << '\n';
             if (!out) throw std::runtime_error("cannot write " + summary_file);
         }
         if (!side_file.empty()) {
@@ -271,6 +311,9 @@ int main(int argc, char** argv) {
         std::cerr << "photon-compare: RMSE " << fixed(rmse, 4) << ", PSNR " << fixed(psnr, 2)
                   << " dB (peak 1), mean " << fixed(channel_mean(mean_a), 4) << " vs " << fixed(channel_mean(mean_b), 4)
                   << '\n';
+        if (block > 0)
+            std::cerr << "photon-compare: RMSE of " << block << "x" << block << " block means " << fixed(rmse_blocks, 4)
+                      << ", worst region " << worst_region << " " << fixed(100.0 * worst_bias, 1) << "%\n";
         return EXIT_SUCCESS;
     } catch (const dsl::Error& e) {
         std::cerr << e.what() << '\n';
