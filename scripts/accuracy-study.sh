@@ -54,12 +54,10 @@ scene=$root/examples/scenes/cornell.pov
 work=$root/$build/accuracy
 mkdir -p "$work" "$images"
 block=8
-# The Cornell walls' inner faces (as in scripts/compare-povray.sh).
-regions=(--region "floor=-1.2,-0.001,-1.2,1.2,0.001,1.2,+y"
-  --region "ceiling=-1.2,1.799,-1.2,1.2,1.801,1.2,-y"
-  --region "back wall=-1.2,0,1.199,1.2,1.8,1.201,-z"
-  --region "left wall=-1.201,0,-1.2,-1.199,1.8,1.2,+x"
-  --region "right wall=1.199,0,-1.2,1.201,1.8,1.2,-x")
+# The Cornell walls' inner faces, shared with scripts/compare-povray.sh.
+source "$root/scripts/scene-regions.sh"
+set_regions cornell
+regions=("${region_args[@]}")
 
 now() { date +%s.%N; }
 # Renders $work/NAME.exr with the scene's settings overridden by the remaining arguments, `runs`

@@ -10,23 +10,6 @@
 # The build directory is $PHOTON_BENCH_BUILD_DIR, default build-bench/ in the repository.
 set -euo pipefail
 
-root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="${PHOTON_BENCH_BUILD_DIR:-$root/build-bench}"
-generator=()
-if command -v ninja >/dev/null 2>&1; then generator=(-G Ninja); fi
-
-if [ ! -f "$build/CMakeCache.txt" ]; then
-  cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_BENCH=ON \
-    -DPHOTON_BUILD_TESTS=OFF -DPHOTON_BUILD_EXAMPLES=OFF -DPHOTON_BUILD_CLI=OFF -DPHOTON_INSTALL=OFF >/dev/null
-else
-  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_BENCH=ON >/dev/null
-fi
-cmake --build "$build" --target kdtree_bench
-
-flags="$(sed -n 's/^CMAKE_CXX_FLAGS_RELEASE:[A-Z]*=//p' "$build/CMakeCache.txt")"
-compiler="$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")"
-echo "compiler: $("$compiler" --version | head -n 1), flags: -std=c++20 $flags"
-if command -v lscpu >/dev/null 2>&1; then
-  echo "cpu: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) logical cores; the benchmark is single-threaded"
-fi
+source "$(dirname "${BASH_SOURCE[0]}")/bench-common.sh"
+bench_build kdtree_bench
 "$build/bench/kdtree_bench" "$@"
