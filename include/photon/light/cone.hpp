@@ -22,7 +22,11 @@ public:
             throw std::invalid_argument("cone: half-angle must be in (0, 180] degrees");
         axis_ = axis / len;
         half_angle_ = half_angle_degrees;
-        cos_half_angle_ = std::cos(half_angle_degrees * pi<S> / S(180));
+        // 1 - cos in double from the half-angle itself: in float 1 - cos(0.1 deg) is 4% off and
+        // below 0.03 degrees it is 0, which made the intensity power / 0.
+        const double theta = double(half_angle_degrees) * pi<double> / 180.0;
+        one_minus_cos_ = S(one_minus_cos(theta));
+        cos_half_angle_ = S(std::cos(theta));
         frame_ = Frame<S>::from_normal(axis_);
     }
     /// From a full field of view (twice the half-angle), in degrees.
@@ -33,18 +37,20 @@ public:
     [[nodiscard]] const Vec3<S>& axis() const noexcept { return axis_; }
     [[nodiscard]] S half_angle_degrees() const noexcept { return half_angle_; }
     [[nodiscard]] S cos_half_angle() const noexcept { return cos_half_angle_; }
-    [[nodiscard]] S solid_angle() const noexcept { return cone_solid_angle(cos_half_angle_); }
+    [[nodiscard]] S one_minus_cos_half_angle() const noexcept { return one_minus_cos_; }
+    [[nodiscard]] S solid_angle() const noexcept { return cone_solid_angle_1mc(one_minus_cos_); }
+    /// Compared as 1 - cos, which stays exact for directions nearly along a narrow cone's axis.
     [[nodiscard]] bool contains(const Vec3<S>& unit_dir) const noexcept {
-        return glm::dot(unit_dir, axis_) >= cos_half_angle_;
+        return one_minus_cos_between(unit_dir, axis_) <= one_minus_cos_;
     }
     /// Uniform direction in the cone.
     [[nodiscard]] Vec3<S> sample(Vec2<S> u) const noexcept {
-        return frame_.to_world(uniform_cone(u, cos_half_angle_));
+        return frame_.to_world(uniform_cone_1mc(u, one_minus_cos_));
     }
 
 private:
     Vec3<S> axis_;
-    S half_angle_, cos_half_angle_;
+    S half_angle_, cos_half_angle_, one_minus_cos_;
     Frame<S> frame_;
 };
 

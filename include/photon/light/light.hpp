@@ -111,10 +111,9 @@ public:
         }
         // Cone of directions subtended by the sphere; 1 - cos computed as sin^2 / (1 + cos).
         const S sin2_max = radius_ * radius_ / d2;
-        cos_max_ = std::sqrt(std::max(S(0), S(1) - sin2_max));
-        const S one_minus_cos = sin2_max / (S(1) + cos_max_);
+        one_minus_cos_ = sin2_max / (S(1) + std::sqrt(std::max(S(0), S(1) - sin2_max)));
         frame_ = Frame<S>::from_normal(axis_);
-        value_ = intensity / (pi<S> * radius_ * radius_) * (S(2) * pi<S> * one_minus_cos);
+        value_ = intensity / (pi<S> * radius_ * radius_) * cone_solid_angle_1mc(one_minus_cos_);
     }
 
     /// Whether more than one sample can differ (an area light).
@@ -128,7 +127,7 @@ public:
             if (cone_ && !cone_->contains(-axis_)) return std::nullopt;
             return IncidentLight<S>{axis_, distance_, value_};
         }
-        const Vec3<S> dir = frame_.to_world(Vec3<S>{uniform_cone(u, cos_max_)});
+        const Vec3<S> dir = frame_.to_world(Vec3<S>{uniform_cone_1mc(u, one_minus_cos_)});
         if (cone_ && !cone_->contains(-dir)) return std::nullopt;
         const S b = glm::dot(dir, to_center_);
         const Vec3<S> off = to_center_ - b * dir;
@@ -139,7 +138,7 @@ public:
 private:
     const std::optional<Cone<S>>& cone_;
     Vec3<S> to_center_{}, axis_{};
-    S radius_ = S(0), distance_ = S(0), cos_max_ = S(1);
+    S radius_ = S(0), distance_ = S(0), one_minus_cos_ = S(0);
     Frame<S> frame_{};
     Rgb<S> value_{};
     bool visible_ = false;

@@ -33,18 +33,45 @@ template <Scalar S> [[nodiscard]] Vec3<S> rejection_sphere(Pcg32& rng) noexcept 
     }
 }
 
-/// Uniform direction within the cone of half-angle acos(cos_max) around +z.
-/// pdf = 1 / (2 pi (1 - cos_max)).
-template <Scalar S> [[nodiscard]] Vec3<S> uniform_cone(Vec2<S> u, S cos_max) noexcept {
-    const S cos_t = S(1) - u.x * (S(1) - cos_max);
-    const S sin_t = std::sqrt(std::max(S(0), S(1) - cos_t * cos_t));
+/// Uniform direction within the cone around +z whose half-angle theta has 1 - cos(theta) =
+/// `one_minus_cos` (in [0, 2]). Taking 1 - cos rather than cos keeps narrow cones exact: at 0.01
+/// degrees cos rounds to 1 in float, while 1 - cos = 1.5e-8 is still held to full precision.
+/// pdf = 1 / (2 pi one_minus_cos).
+template <Scalar S> [[nodiscard]] Vec3<S> uniform_cone_1mc(Vec2<S> u, S one_minus_cos) noexcept {
+    const S t = u.x * one_minus_cos;                          // 1 - cos of the sampled direction
+    const S sin_t = std::sqrt(std::max(S(0), t * (S(2) - t)));  // sin^2 = (1 - cos)(1 + cos)
     const S phi = S(2) * pi<S> * u.y;
-    return {sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t};
+    return {sin_t * std::cos(phi), sin_t * std::sin(phi), S(1) - t};
+}
+
+/// Uniform direction within the cone of half-angle acos(cos_max) around +z (uniform_cone_1mc
+/// for cones wide enough that cos_max is exact). pdf = 1 / (2 pi (1 - cos_max)).
+template <Scalar S> [[nodiscard]] Vec3<S> uniform_cone(Vec2<S> u, S cos_max) noexcept {
+    return uniform_cone_1mc(u, S(1) - cos_max);
+}
+
+/// 1 - cos(theta) for a half-angle theta in radians, without the cancellation of 1 - cos:
+/// 2 sin^2(theta / 2).
+template <Scalar S> [[nodiscard]] S one_minus_cos(S theta) noexcept {
+    const S s = std::sin(theta / S(2));
+    return S(2) * s * s;
+}
+
+/// 1 - cos of the angle between unit vectors a and b, accurate for nearly parallel ones:
+/// |a - b|^2 = 2 - 2 cos.
+template <Scalar S> [[nodiscard]] S one_minus_cos_between(const Vec3<S>& a, const Vec3<S>& b) noexcept {
+    const Vec3<S> d = a - b;
+    return glm::dot(d, d) / S(2);
+}
+
+/// Solid angle of a cone whose half-angle has 1 - cos = `one_minus_cos`, in steradians.
+template <Scalar S> [[nodiscard]] constexpr S cone_solid_angle_1mc(S one_minus_cos) noexcept {
+    return S(2) * pi<S> * one_minus_cos;
 }
 
 /// Solid angle of a cone with half-angle acos(cos_max), in steradians.
 template <Scalar S> [[nodiscard]] constexpr S cone_solid_angle(S cos_max) noexcept {
-    return S(2) * pi<S> * (S(1) - cos_max);
+    return cone_solid_angle_1mc(S(1) - cos_max);
 }
 
 /// Concentric map of the unit square onto the unit disc (Shirley and Chiu 1997): area preserving,
