@@ -103,26 +103,43 @@ private:
 }  // namespace detail
 
 /// Irradiance (W/m^2 per channel) at `x` on a surface with unit normal `n` facing the side being
-/// shaded. When k photons are found, the disc radius is the distance of the k-th and that photon
-/// is left out, which makes the estimate unbiased for a uniform density ((k-1) / (pi r^2) is the
-/// unbiased k-nearest-neighbour density); otherwise the radius is max_radius and every photon
-/// found counts. `disc`, if given, clips the disc to what x can see.
+/// shaded. When k photons are found, the k-th nearest is left out, which makes the estimate
+/// unbiased for a uniform density ((k-1) / (pi r^2) is the unbiased k-nearest-neighbour density);
+/// otherwise every photon found counts over the disc of radius max_radius. `disc`, if given,
+/// clips the disc to what x can see.
+///
+/// The area divided by is pi r^2 with r the largest Euclidean (not flattened) distance among the
+/// photons found. Photons are selected in the flattened metric, but on a curved surface the part
+/// inside the flattened ellipsoid is a cap whose chord is shorter than the flattened radius, and a
+/// cap of chord c on a sphere has area exactly pi c^2 (Archimedes), convex or concave. On a plane
+/// both radii are the same. Dividing by the flattened radius read a 0.4 m ball 5% dark at k = 100
+/// and 35-40% dark at k = 2000.
 template <Scalar S>
 [[nodiscard]] Rgb<S> estimate_irradiance(const PhotonMap& map, const Vec3<S>& x, const Vec3<S>& n,
                                          const EstimateSettings& settings, EstimateScratch& scratch,
                                          const VisibleDisc* disc = nullptr) {
     if (map.empty() || settings.k == 0 || !(settings.max_radius > 0.0f)) return Rgb<S>(S(0));
-    detail::DiscGather gather(map, Vec3<float>(x), Vec3<float>(n), settings, disc, scratch.found);
-    map.search(Vec3<float>(x), gather);
-    const bool k_found = gather.finish();
+    const Vec3<float> xf(x);
+    detail::DiscGather gather(map, xf, Vec3<float>(n), settings, disc, scratch.found);
+    map.search(xf, gather);
+    bool k_found = gather.finish();
     const auto& found = scratch.found;
     if (found.empty()) return Rgb<S>(S(0));
-    float r2 = settings.max_radius * settings.max_radius;
+    // k photons all at distance 0 (piled up at x, as behind a perfect lens) leave no radius: count
+    // them over the largest disc instead, a finite lower bound rather than a black pixel.
+    if (k_found && !(found.back().distance2 > 0.0f)) k_found = false;
+    float r2 = settings.max_radius * settings.max_radius;  // the kernel's radius, flattened metric
+    float area_r2 = r2;
     std::size_t used = found.size();
     if (k_found) {
         r2 = found.back().distance2;  // the k-th nearest, left out
         used = found.size() - 1;
-        if (used == 0 || !(r2 > 0.0f)) return Rgb<S>(S(0));
+        area_r2 = 0.0f;
+        for (const GatheredPhoton& p : found) {
+            const Vec3<float> offset = map.position(p.index) - xf;
+            area_r2 = std::max(area_r2, glm::dot(offset, offset));
+        }
+        if (!(area_r2 > 0.0f)) area_r2 = r2;  // (all photons within rounding of x)
     }
     Rgb<float> sum(0.0f);
     const float inv_r2 = 1.0f / r2;
@@ -130,7 +147,7 @@ template <Scalar S>
         const GatheredPhoton& p = found[j];
         sum += settings.kernel.weight(std::min(1.0f, p.distance2 * inv_r2)) * map.payload(p.index).power();
     }
-    const float area = disc ? disc->area(std::sqrt(r2)) : pi<float> * r2;
+    const float area = disc ? disc->area(std::sqrt(area_r2)) : pi<float> * area_r2;
     if (!(area > 0.0f)) return Rgb<S>(S(0));
     return Rgb<S>(sum / (area * settings.kernel.mean_weight()));
 }
