@@ -33,9 +33,10 @@ struct MemoryEstimate {
 /// permutation and the normal (render.hpp, build_photon_maps).
 inline constexpr double bytes_per_stored_photon = 3.0 * sizeof(Photon) + 8.0 + 2.0;
 
-/// Upper bound on the expected number of times one emitted photon is stored: a photon survives a
-/// bounce with probability rho_d,avg + rho_s,avg + rho_t,avg (Russian roulette) <= `max_albedo`,
-/// and is stored at most once per hit, for at most `max_depth` hits.
+/// Upper bound on the expected number of times one emitted photon is stored: a photon is stored
+/// only at hits on surfaces with a diffuse part, and leaves each by Russian roulette with
+/// probability rho_d,avg + rho_s,avg + rho_t,avg <= `max_albedo` (of those surfaces), so it reaches
+/// its j-th store with probability at most max_albedo^(j-1); at most `max_depth` hits.
 [[nodiscard]] inline double stores_per_photon(double max_albedo, unsigned max_depth) noexcept {
     const double rho = std::clamp(max_albedo, 0.0, 1.0);
     if (rho >= 1.0) return double(max_depth);
@@ -105,12 +106,14 @@ inline void check_memory(const MemoryEstimate& estimate, double limit = 0) {
                            " is available: lower the resolution or the photon counts");
 }
 
-/// Highest survival probability of a photon at any material of `scene` (1 when unknown).
+/// Highest survival probability of a photon at any material of `scene` that stores photons (one
+/// with a diffuse part; 1 when unknown).
 template <class SceneT>
 [[nodiscard]] double max_albedo(const SceneT& scene) {
     if constexpr (requires { scene.materials(); }) {
         double rho = 0;
         for (const auto& material : scene.materials()) {
+            if (!material.has_diffuse()) continue;  // never stores a photon (stores_per_photon)
             const auto& p = material.params();
             auto avg = [](const auto& c) { return (double(c.x) + double(c.y) + double(c.z)) / 3.0; };
             rho = std::max(rho, avg(p.diffuse) + avg(p.specular) + avg(p.transmission));
