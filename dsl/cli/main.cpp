@@ -327,6 +327,9 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
         std::cerr << "photon: wrote " << written.string()
                   << (partial ? " (PARTIAL: interrupted, marked photon:partial=true)" : "") << '\n';
     }
+    // Warnings about one object were already reported at its place in the file when the scene was built.
+    for (const photon::RenderWarning& w : result.stats.warnings)
+        if (!w.object) std::cerr << "photon: warning: " << w.message << '\n';
     if (!ro.no_stats && !so.quiet) std::cout << photon::format_stats(result.stats);
     return partial ? exit_interrupted : EXIT_SUCCESS;
 }

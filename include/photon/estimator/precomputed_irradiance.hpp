@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -46,16 +47,17 @@ public:
 
     /// Irradiance of the nearest sample within `max_radius` whose normal is within about 25
     /// degrees of `n` and that `visible(sample_position, sample_normal)` accepts, among the
-    /// `candidates` nearest such samples; zero if there is none. The normal test rejects samples
-    /// on other surfaces (the far face of a thin wall, a perpendicular wall at a corner); the
-    /// visibility test rejects samples on the same plane behind a wall standing on it.
+    /// `candidates` nearest such samples; nothing if there is none (the caller then estimates
+    /// from the photon map itself: a lit point must not read black). The normal test rejects
+    /// samples on other surfaces (the far face of a thin wall, a perpendicular wall at a corner);
+    /// the visibility test rejects samples on the same plane behind a wall standing on it.
     template <class Visible>
-    [[nodiscard]] Rgb<float> lookup(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
-                                    std::vector<Neighbor<float>>& buffer, Visible&& visible,
-                                    unsigned candidates = 4) const {
-        if (tree_.empty()) return Rgb<float>(0.0f);
+    [[nodiscard]] std::optional<Rgb<float>> find(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
+                                                 std::vector<Neighbor<float>>& buffer, Visible&& visible,
+                                                 unsigned candidates = 4) const {
+        if (tree_.empty()) return std::nullopt;
         auto found = tree_.k_nearest(x, candidates, max_radius, buffer, [&](std::uint32_t i, float) {
-            return glm::dot(decode_octahedral(tree_.payload(i).normal), n) > 0.9f;
+            return glm::dot(decode_octahedral(tree_.payload(i).normal), n) > min_normal_cosine;
         });
         std::sort(buffer.begin(), buffer.begin() + std::ptrdiff_t(found.neighbors.size()),
                   [](const Neighbor<float>& a, const Neighbor<float>& b) { return a.distance2 < b.distance2; });
@@ -63,13 +65,25 @@ public:
             const IrradiancePayload& p = tree_.payload(c.index);
             if (visible(tree_.position(c.index), decode_octahedral(p.normal))) return p.irradiance;
         }
-        return Rgb<float>(0.0f);
+        return std::nullopt;
+    }
+    /// find(), or zero where no sample qualifies.
+    template <class Visible>
+    [[nodiscard]] Rgb<float> lookup(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
+                                    std::vector<Neighbor<float>>& buffer, Visible&& visible,
+                                    unsigned candidates = 4) const {
+        return find(x, n, max_radius, buffer, visible, candidates).value_or(Rgb<float>(0.0f));
     }
     /// Irradiance of the nearest matching sample, without a visibility test.
     [[nodiscard]] Rgb<float> lookup(const Vec3<float>& x, const Vec3<float>& n, float max_radius,
                                     std::vector<Neighbor<float>>& buffer) const {
         return lookup(x, n, max_radius, buffer, [](const Vec3<float>&, const Vec3<float>&) { return true; }, 1);
     }
+
+    /// Samples whose normal is further than this from the query's (about 25 degrees) belong to
+    /// another surface. It also bounds the curvature between a query and a sample on one curved
+    /// surface, which the visibility test relies on (visibility_lift).
+    static constexpr float min_normal_cosine = 0.9f;
 
 private:
     KdTree<IrradianceSample> tree_;

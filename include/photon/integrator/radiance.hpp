@@ -23,6 +23,9 @@ namespace photon {
 /// global map and the irradiance cache of final gathers. Any may be absent.
 struct PhotonMaps {
     std::optional<PhotonMap> global, caustic;
+    /// L S+ D photons of the global pass from directions the caustic pass does not aim into (a
+    /// mirror plane's reflection): caustics too, as sparse as the global map, read like it.
+    std::optional<PhotonMap> unaimed_caustic;
     std::optional<PrecomputedIrradiance> irradiance;
     std::optional<IrradianceCache> irradiance_cache;  ///< final gathers, built by a pretrace
 };
@@ -52,14 +55,14 @@ public:
                 break;
             case RenderMode::pm:
                 result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
-                result += brdf * map_irradiance(maps_.caustic, settings_.caustic_estimate, above, f.normal, ctx);
+                result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
                                       ? final_gather(above, f.normal, ctx)
                                       : map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx));
                 break;
             case RenderMode::pm_direct:
                 result += brdf * (map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx) +
-                                  map_irradiance(maps_.caustic, settings_.caustic_estimate, above, f.normal, ctx));
+                                  caustic_irradiance(above, f.normal, ctx));
                 break;
             case RenderMode::reference: break;  // rendered by PathTracer
             }
@@ -108,6 +111,12 @@ private:
         if (es.boundary_probes == 0) return estimate_irradiance(*map, x, n, es, ctx.scratch);
         const VisibleDisc disc = probe_visible_disc(scene_, x, n, es.max_radius, es.boundary_probes, ctx);
         return estimate_irradiance(*map, x, n, es, ctx.scratch, &disc);
+    }
+
+    /// Irradiance at x from L S+ D paths: the caustic map, and the global pass's unaimed caustics.
+    [[nodiscard]] Rgb<S> caustic_irradiance(const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
+        return map_irradiance(maps_.caustic, settings_.caustic_estimate, x, n, ctx) +
+               map_irradiance(maps_.unaimed_caustic, settings_.global_estimate, x, n, ctx);
     }
 
     /// Indirect irradiance at x by final gathering (through the irradiance cache when there is one
@@ -197,16 +206,29 @@ private:
     }
 
     /// Precomputed irradiance at a gather hit: the nearest sample on the same surface that x can
-    /// see (a short shadow ray keeps samples behind a thin wall out).
+    /// see, or a density estimate from the global map where no sample qualifies (an object
+    /// smaller than the sample spacing, a sample hidden behind a wall).
+    ///
+    /// The visibility test is a short shadow ray from x to the sample, both ends lifted off the
+    /// surface by a quarter of their distance: unlifted, the chord between two points of a convex
+    /// surface runs inside it, so on a ball every sample was rejected and the ball's bounce light
+    /// (colour bleeding onto the floor) read black. Lifted by d / 4, the segment clears a sphere of
+    /// any radius for samples within the lookup's 25 degrees of normal, and a wall standing on
+    /// the surface between them still blocks it unless it is lower than d / 4.
     [[nodiscard]] Rgb<S> precomputed_irradiance(const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
         const auto visible = [&](const Vec3<float>& sample, const Vec3<float>& sample_normal) {
             const Vec3<S> p(sample);
-            const Vec3<S> end = offset_origin(p, Vec3<S>(sample_normal), stored_point_error(p, x));
+            const S lift = glm::length(p - x) * S(0.25);
+            const Vec3<S> from = x + lift * n;
+            const Vec3<S> to = offset_origin(p, Vec3<S>(sample_normal), stored_point_error(p, x)) +
+                               lift * Vec3<S>(sample_normal);
             ++ctx.rays.probe;
-            return !scene_.occluded(Ray<S>{x, end - x, S(1)});
+            return !scene_.occluded(Ray<S>{from, to - from, S(1)});
         };
-        return Rgb<S>(maps_.irradiance->lookup(Vec3<float>(x), Vec3<float>(n), settings_.global_estimate.max_radius,
-                                               ctx.nearest, visible));
+        if (const auto e = maps_.irradiance->find(Vec3<float>(x), Vec3<float>(n), settings_.global_estimate.max_radius,
+                                                  ctx.nearest, visible))
+            return Rgb<S>(*e);
+        return map_irradiance(maps_.global, settings_.global_estimate, x, n, ctx);
     }
 
     const SceneT& scene_;

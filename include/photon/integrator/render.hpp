@@ -23,13 +23,13 @@ struct RenderResult {
 };
 
 /// Which paths the global map must hold for `settings`: direct and caustic photons only when
-/// something reads them from it (final gathering, pm-direct, or no caustic map to take caustics).
-[[nodiscard]] inline PathKinds global_map_contents(const RenderSettings& s, bool has_caustic_map) noexcept {
+/// something reads them from it (final gathering, pm-direct). Caustics at the first diffuse hit
+/// always come from the caustic map, which the global pass completes where the caustic pass
+/// does not aim.
+[[nodiscard]] inline PathKinds global_map_contents(const RenderSettings& s) noexcept {
     const bool gathering = s.mode == RenderMode::pm && s.final_gather_rays > 0;
     const bool all_light = s.mode == RenderMode::pm_direct;
-    return {.direct = gathering || all_light,
-            .caustic = gathering || !has_caustic_map,
-            .indirect = true};
+    return {.direct = gathering || all_light, .caustic = gathering, .indirect = true};
 }
 
 [[nodiscard]] inline bool uses_irradiance_cache(const RenderSettings& s) noexcept {
@@ -82,21 +82,26 @@ template <class SceneT>
     return PrecomputedIrradiance(samples);
 }
 
-/// Pass 1: traces and balances the photon maps the mode needs. `rt` needs none; the caustic
-/// pass runs only when the scene can form caustics (scene_has_caustics).
+/// Pass 1: traces and balances the photon maps the mode needs. `rt` needs none. Caustics come
+/// from two maps: the caustic pass's photons (aimed at the caustic targets), and the global
+/// pass's L S+ D photons from every direction the caustic pass does not aim into, kept apart
+/// because they are as sparse as the global map's and are read with its estimate settings
+/// (unaimed_specular_objects() lists the mirrors and glass only they serve, with a warning).
 template <class SceneT>
 [[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const RenderSettings& settings, RenderStats& stats) {
     PhotonMaps maps;
     if (settings.mode == RenderMode::rt || settings.mode == RenderMode::reference) return maps;
-    auto settle = [](std::optional<PhotonMap>& map, TracedPhotons&& traced, PhotonMapStats& st) {
-        st.emitted = traced.emitted;
-        st.rays = traced.rays;
-        st.trace_seconds = traced.seconds;
+    auto settle = [](std::optional<PhotonMap>& map, std::span<const Photon> photons, PhotonMapStats& st) {
         const auto start = std::chrono::steady_clock::now();
-        map.emplace(std::span<const Photon>(traced.photons));
+        map.emplace(photons);
         st.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         st.stored = map->size();
         st.memory_bytes = map->memory_bytes();
+    };
+    auto count = [](const TracedPhotons& traced, PhotonMapStats& st) {
+        st.emitted = traced.emitted;
+        st.rays = traced.rays;
+        st.trace_seconds = traced.seconds;
     };
     auto report = [&](RenderPhase phase) -> std::function<void(double)> {
         if (!settings.progress) return {};
@@ -110,22 +115,39 @@ template <class SceneT>
                                .threads = settings.threads,
                                .progress = report(RenderPhase::caustic_photons),
                                .cancel = settings.cancel};
-    const bool caustics = settings.caustic_photons > 0 && scene_has_caustics(scene);
-    if (caustics) settle(maps.caustic, trace_caustic_photons(scene, pass), stats.caustic);
+    const bool caustics = scene_has_caustics(scene);
+    const auto aim = caustic_aim(scene);
+    const bool caustic_pass = caustics && settings.caustic_photons > 0 && !aim.empty();
+    std::vector<Photon> caustic_photons;
+    if (caustic_pass) {
+        TracedPhotons traced = trace_caustic_photons(scene, pass, aim);
+        count(traced, stats.caustic);
+        caustic_photons = std::move(traced.photons);
+    }
+    if (caustics)
+        for (std::uint32_t id : unaimed_specular_objects(scene))
+            stats.warnings.push_back({unaimed_caustics_warning, id});
     if (settings.global_photons > 0 && !cancelled()) {
         pass.photons = settings.global_photons;
         pass.progress = report(RenderPhase::global_photons);
-        pass.store = global_map_contents(settings, caustics);
+        pass.store = global_map_contents(settings);
         pass.keep_normals = uses_precomputed_irradiance(settings);
-        TracedPhotons traced = trace_global_photons(scene, pass);
-        std::vector<Photon> photons = traced.photons;  // the precomputation needs them in trace order
-        std::vector<std::uint16_t> normals = std::move(traced.normals);
-        settle(maps.global, std::move(traced), stats.global);
+        pass.collect_unaimed_caustics = caustics;
+        TracedPhotons traced = trace_global_photons(scene, pass, caustic_pass ? aim : decltype(aim){});
+        count(traced, stats.global);
+        if (!traced.unaimed_caustics.empty()) maps.unaimed_caustic.emplace(std::span<const Photon>(traced.unaimed_caustics));
+        settle(maps.global, traced.photons, stats.global);  // photons stay in trace order for the precomputation
         if (pass.keep_normals && !cancelled()) {
             const auto start = std::chrono::steady_clock::now();
-            maps.irradiance = precompute_irradiance(scene, *maps.global, photons, normals, settings, stats.rays);
+            maps.irradiance = precompute_irradiance(scene, *maps.global, traced.photons, traced.normals, settings, stats.rays);
             stats.precompute_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
+    }
+    if (!caustic_photons.empty()) settle(maps.caustic, caustic_photons, stats.caustic);
+    if (maps.unaimed_caustic) {
+        stats.caustic.from_global = maps.unaimed_caustic->size();
+        stats.caustic.stored += maps.unaimed_caustic->size();
+        stats.caustic.memory_bytes += maps.unaimed_caustic->memory_bytes();
     }
     return maps;
 }

@@ -4,7 +4,9 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace photon {
 
@@ -23,9 +25,18 @@ struct RayCounts {
 struct PhotonMapStats {
     std::uint64_t emitted = 0;  ///< photons shot
     std::uint64_t stored = 0;   ///< photons in the map
+    /// Caustics: of the stored photons, the global pass's L S+ D photons from directions the
+    /// caustic pass does not aim into (a map of their own, PhotonMaps::unaimed_caustic)
+    std::uint64_t from_global = 0;
     std::uint64_t rays = 0;     ///< photon rays traced
     std::uint64_t memory_bytes = 0;
     double trace_seconds = 0, build_seconds = 0;
+};
+
+/// Something a render approximated or could not do well, for the user to read.
+struct RenderWarning {
+    std::string message;
+    std::optional<std::uint32_t> object{};  ///< the scene object it is about, if any
 };
 
 struct RenderStats {
@@ -37,6 +48,7 @@ struct RenderStats {
     std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
     double precompute_seconds = 0, cache_seconds = 0, render_seconds = 0, total_seconds = 0;
     bool partial = false;  ///< cancelled before every pixel was rendered
+    std::vector<RenderWarning> warnings;
 };
 
 /// The statistics as an aligned plain-text table.
@@ -56,9 +68,10 @@ struct RenderStats {
     row("global map", "%llu emitted, %llu stored, %.1f MiB, trace %.2f s, build %.2f s",
         (unsigned long long)s.global.emitted, (unsigned long long)s.global.stored, mib(s.global.memory_bytes),
         s.global.trace_seconds, s.global.build_seconds);
-    row("caustic map", "%llu emitted, %llu stored, %.1f MiB, trace %.2f s, build %.2f s",
-        (unsigned long long)s.caustic.emitted, (unsigned long long)s.caustic.stored, mib(s.caustic.memory_bytes),
-        s.caustic.trace_seconds, s.caustic.build_seconds);
+    row("caustic map", "%llu emitted, %llu stored (%llu from the global pass), %.1f MiB, trace %.2f s, build %.2f s",
+        (unsigned long long)s.caustic.emitted, (unsigned long long)s.caustic.stored,
+        (unsigned long long)s.caustic.from_global, mib(s.caustic.memory_bytes), s.caustic.trace_seconds,
+        s.caustic.build_seconds);
     row("photon rays", "%llu", (unsigned long long)(s.global.rays + s.caustic.rays));
     row("rays (pass 2)", "%llu total: camera %llu, shadow %llu, reflection %llu,", (unsigned long long)s.rays.total(),
         (unsigned long long)s.rays.camera, (unsigned long long)s.rays.shadow, (unsigned long long)s.rays.reflection);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "../geometry/bbox.hpp"
 #include "../light/light.hpp"
 #include "../math/frame.hpp"
 #include "../math/sampling.hpp"
@@ -18,11 +19,11 @@ namespace photon {
 /// Directions from a light that can reach one target.
 template <Scalar S> struct TargetCone {
     Vec3<S> axis;
-    S cos_half_angle;  ///< -1: the whole sphere of directions
+    S one_minus_cos;  ///< 1 - cos of the half-angle; 2: the whole sphere of directions
     S solid_angle;
     Frame<S> frame;
 
-    [[nodiscard]] bool contains(const Vec3<S>& d) const noexcept { return glm::dot(d, axis) >= cos_half_angle; }
+    [[nodiscard]] bool contains(const Vec3<S>& d) const noexcept { return one_minus_cos_between(d, axis) <= one_minus_cos; }
 };
 
 /// Cones from `light` to targets bounded by spheres (centre, radius). The cone is widened by the
@@ -40,12 +41,14 @@ template <Scalar S>
         TargetCone<S> cone;
         if (!(d > reach)) {
             cone.axis = {S(0), S(0), S(1)};
-            cone.cos_half_angle = S(-1);
+            cone.one_minus_cos = S(2);
         } else {
+            // 1 - cos = sin^2 / (1 + cos): a small target far away keeps its solid angle.
             cone.axis = to / d;
-            cone.cos_half_angle = std::sqrt(std::max(S(0), S(1) - squared(reach / d)));
+            const S sin2 = squared(reach / d);
+            cone.one_minus_cos = sin2 / (S(1) + std::sqrt(std::max(S(0), S(1) - sin2)));
         }
-        cone.solid_angle = cone_solid_angle(cone.cos_half_angle);
+        cone.solid_angle = cone_solid_angle_1mc(cone.one_minus_cos);
         cone.frame = Frame<S>::from_normal(cone.axis);
         cones.push_back(cone);
     }
@@ -72,11 +75,72 @@ template <Scalar S>
         pick -= cones[i].solid_angle;
     }
     const TargetCone<S>& c = cones[chosen];
-    const Vec3<S> d = c.frame.to_world(uniform_cone(rng.uniform2<S>(), c.cos_half_angle));
+    const Vec3<S> d = c.frame.to_world(uniform_cone_1mc(rng.uniform2<S>(), c.one_minus_cos));
     unsigned covering = 0;
     for (const auto& cone : cones) covering += cone.contains(d) ? 1u : 0u;
     covering = std::max(covering, 1u);  // the chosen cone contains d up to rounding
     return {d, S(covering) / total_solid_angle};
+}
+
+/// Where each light's caustic photons are aimed: the cones around the bounding spheres of the
+/// scene's caustic targets, per light. The caustic pass samples them; the global pass asks
+/// covers() which of its L S+ D photons the caustic pass could also have produced, and hands
+/// the others to the caustic map itself, so that no caustic path is lost (an infinite mirror
+/// plane cannot be aimed at, a mirror with `photons { }` but no `target` is not).
+template <Scalar S> struct CausticAim {
+    std::vector<std::vector<TargetCone<S>>> cones;  ///< per light; empty: no caustic pass
+    std::vector<S> total_solid_angle;               ///< per light
+
+    [[nodiscard]] bool empty() const noexcept {
+        for (const auto& c : cones)
+            if (!c.empty()) return false;
+        return true;
+    }
+    [[nodiscard]] bool covers(std::size_t light, const Vec3<S>& direction) const noexcept {
+        if (light >= cones.size()) return false;
+        for (const auto& c : cones[light])
+            if (c.contains(direction)) return true;
+        return false;
+    }
+};
+
+/// Whether caustic photons can be aimed at object `i`: a caustic target with finite bounds.
+template <class SceneT> [[nodiscard]] bool is_aimable_target(const SceneT& scene, std::uint32_t i) {
+    return scene.is_caustic_target(i) && scene.object_bounds(i).is_finite();
+}
+
+/// The cones of every light towards every aimable caustic target.
+template <class SceneT> [[nodiscard]] CausticAim<typename SceneT::scalar_type> caustic_aim(const SceneT& scene) {
+    using S = typename SceneT::scalar_type;
+    std::vector<std::pair<Vec3<S>, S>> targets;
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+        if (!is_aimable_target(scene, i)) continue;
+        const BBox<S> b = scene.object_bounds(i);
+        targets.push_back({b.center(), glm::length(b.extent()) * S(0.5)});
+    }
+    CausticAim<S> aim;
+    if (targets.empty()) return aim;
+    for (const auto& light : scene.lights()) {
+        aim.cones.push_back(target_cones(light, targets));
+        S sum = 0;
+        for (const auto& c : aim.cones.back()) sum += c.solid_angle;
+        aim.total_solid_angle.push_back(sum);
+    }
+    return aim;
+}
+
+/// What to tell the user about each object unaimed_specular_objects() lists.
+inline constexpr const char* unaimed_caustics_warning =
+    "mirror or glass object that caustic photons are not aimed at (an infinite plane, or no `target`): "
+    "its caustics come from the global photons alone, rendered but noisier";
+
+/// Mirror and glass objects the caustic pass cannot aim at: their caustics reach the caustic map
+/// only through the global photons, which are far fewer there (noisier, not lost).
+template <class SceneT> [[nodiscard]] std::vector<std::uint32_t> unaimed_specular_objects(const SceneT& scene) {
+    std::vector<std::uint32_t> ids;
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i)
+        if (scene.material_of(i).is_specular() && !is_aimable_target(scene, i)) ids.push_back(i);
+    return ids;
 }
 
 }  // namespace photon

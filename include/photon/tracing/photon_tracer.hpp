@@ -3,8 +3,11 @@
 // Pass 1: photon tracing (paper, sections 3.1 and 4). Photons leave the lights, bounce by Russian
 // roulette and are stored at every diffuse hit. Two independent passes fill the two maps: the
 // global pass emits over all directions; the caustic pass aims at mirrors and glass and keeps
-// only L S+ D paths. Photon i of a pass draws from random stream i, and photons are gathered in
-// fixed blocks kept in block order: the maps are bit-identical for any thread count.
+// only L S+ D paths. The caustic pass covers only the directions it aims into, so the global
+// pass hands its L S+ D photons from every other direction to the caustic map too: together
+// they carry every caustic path once. Photon i of a pass draws from random stream i, and photons
+// are gathered in fixed blocks kept in block order: the maps are bit-identical for any thread
+// count.
 
 #include <atomic>
 #include <chrono>
@@ -38,6 +41,9 @@ struct PhotonTracingSettings {
     EmissionSampler sampler = EmissionSampler::direct;
     PathKinds store{};            ///< global pass: which paths it stores (caustic pass: only L S+ D)
     bool keep_normals = false;    ///< also return each stored photon's surface normal
+    /// Global pass: also return the L S+ D photons the caustic pass does not cover
+    /// (TracedPhotons::unaimed_caustics), whatever `store` says.
+    bool collect_unaimed_caustics = false;
     std::uint64_t seed = 1;
     unsigned threads = 0;         ///< 0: all hardware threads
     std::function<void(double)> progress{};  ///< fraction of photons emitted; serialised calls
@@ -48,6 +54,8 @@ struct PhotonTracingSettings {
 struct TracedPhotons {
     std::vector<Photon> photons;
     std::vector<std::uint16_t> normals;  ///< octahedral, facing the photon's side; if keep_normals
+    /// Global pass: L S+ D photons emitted outside the caustic pass's cones (collect_unaimed_caustics).
+    std::vector<Photon> unaimed_caustics;
     std::size_t emitted = 0;             ///< photons emitted, the count their power was divided by
     std::uint64_t rays = 0;              ///< photon rays traced
     double seconds = 0;
@@ -61,6 +69,7 @@ constexpr std::size_t photon_block = 1024;  ///< photons per work unit, fixed fo
 struct PhotonBlock {
     std::vector<Photon> photons;
     std::vector<std::uint16_t> normals;
+    std::vector<Photon> unaimed_caustics;
     std::uint64_t rays = 0;
 };
 
@@ -129,6 +138,8 @@ TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t sa
     for (auto& b : out) {
         result.photons.insert(result.photons.end(), b.photons.begin(), b.photons.end());
         result.normals.insert(result.normals.end(), b.normals.begin(), b.normals.end());
+        result.unaimed_caustics.insert(result.unaimed_caustics.end(), b.unaimed_caustics.begin(),
+                                       b.unaimed_caustics.end());
         result.rays += b.rays;
         std::vector<Photon>().swap(b.photons);
     }
@@ -138,10 +149,12 @@ TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t sa
 }
 
 /// Follows one photon from `ray` with `power`. `caustic_only` stops at the first diffuse event
-/// and stores only after a specular bounce (L S+ D); otherwise paths are stored per `store`.
+/// and stores only after a specular bounce (L S+ D); otherwise paths are stored per `store`, and
+/// when `unaimed` (the caustic pass cannot emit along this photon's first ray) its L S+ D hits
+/// also go to block.unaimed_caustics.
 template <class SceneT, Scalar S>
 void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const PhotonTracingSettings& settings,
-                       bool caustic_only, Pcg32& rng, PhotonBlock& block) {
+                       bool caustic_only, bool unaimed, Pcg32& rng, PhotonBlock& block) {
     bool specular_only = true;
     for (unsigned depth = 0; depth < settings.max_depth; ++depth) {
         const auto surface = scene.intersect(ray);
@@ -153,16 +166,18 @@ void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const Phot
         if (material.has_diffuse()) {
             const PathKind kind = depth == 0 ? PathKind::direct : (specular_only ? PathKind::caustic : PathKind::indirect);
             const bool keep = caustic_only ? kind == PathKind::caustic : settings.store.contains(kind);
+            // The direction slot holds -f.normal, the side the photon arrived on, not its
+            // travel direction: the estimate's backfacing test compares it with the shading
+            // normal, and on a curved shell a photon travelling nearly tangentially on the
+            // inside has a travel direction that faces the outside's normal a few centimetres
+            // away (a light inside a closed sphere lit its outside at 0.45 W/m^2/sr).
+            const Photon photon{Vec3<float>(surface->hit.point),
+                                PackedPhoton(Rgb<float>(power), Vec3<float>(-f.normal), kind)};
             if (keep) {
-                // The direction slot holds -f.normal, the side the photon arrived on, not its
-                // travel direction: the estimate's backfacing test compares it with the shading
-                // normal, and on a curved shell a photon travelling nearly tangentially on the
-                // inside has a travel direction that faces the outside's normal a few centimetres
-                // away (a light inside a closed sphere lit its outside at 0.45 W/m^2/sr).
-                block.photons.push_back({Vec3<float>(surface->hit.point),
-                                         PackedPhoton(Rgb<float>(power), Vec3<float>(-f.normal), kind)});
+                block.photons.push_back(photon);
                 if (settings.keep_normals) block.normals.push_back(encode_octahedral(Vec3<float>(f.normal)));
             }
+            if (unaimed && kind == PathKind::caustic) block.unaimed_caustics.push_back(photon);
         }
         const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, rng);
         if (s.event == ScatterEvent::absorbed) return;
@@ -181,7 +196,11 @@ void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const Phot
 
 /// Global pass: `settings.photons` photons shared among the lights by power, emitted uniformly
 /// over each light's directions, stored at diffuse hits whose path kind is in `settings.store`.
-template <class SceneT> [[nodiscard]] TracedPhotons trace_global_photons(const SceneT& scene, const PhotonTracingSettings& settings) {
+/// With `settings.collect_unaimed_caustics`, the L S+ D photons emitted outside `aim` (the caustic
+/// pass's cones; empty: there is no caustic pass) are returned in `unaimed_caustics` as well.
+template <class SceneT>
+[[nodiscard]] TracedPhotons trace_global_photons(const SceneT& scene, const PhotonTracingSettings& settings,
+                                                 const CausticAim<typename SceneT::scalar_type>& aim = {}) {
     using S = typename SceneT::scalar_type;
     const auto lights = scene.lights();
     // No light, or none with power: nothing to emit. (Emitting anyway traced photons of zero
@@ -193,55 +212,50 @@ template <class SceneT> [[nodiscard]] TracedPhotons trace_global_photons(const S
         const Light<S>& light = lights[l];
         const Vec3<S> dir = sample_emission_direction(light, settings.sampler, rng);
         const Vec3<S> origin = sample_emission_origin(light, dir, rng.uniform2<S>());
-        detail::trace_photon_path(scene, Ray<S>{origin, dir}, plan.scale[l], settings, false, rng, block);
+        const bool unaimed = settings.collect_unaimed_caustics && !aim.covers(l, dir);
+        detail::trace_photon_path(scene, Ray<S>{origin, dir}, plan.scale[l], settings, false, unaimed, rng, block);
     });
 }
 
-/// Whether any object can form a caustic: a caustic target exists and something is diffuse.
+/// Whether the scene can form caustics at all: a mirror or glass surface, a diffuse one for the
+/// light to land on, and a light with power.
 template <class SceneT> [[nodiscard]] bool scene_has_caustics(const SceneT& scene) {
-    bool target = false, diffuse = false;
+    bool specular = false, diffuse = false;
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
-        target = target || scene.is_caustic_target(i);
+        specular = specular || scene.material_of(i).is_specular();
         diffuse = diffuse || scene.material_of(i).has_diffuse();
     }
-    return target && diffuse && detail::has_emitting_light(scene.lights());
+    return specular && diffuse && detail::has_emitting_light(scene.lights());
 }
 
-/// Caustic pass: photons aimed at the caustic targets' bounding spheres, stored only at the end
-/// of L S+ D paths. Empty (and free) when the scene has no caustics.
-template <class SceneT> [[nodiscard]] TracedPhotons trace_caustic_photons(const SceneT& scene, const PhotonTracingSettings& settings) {
+/// Caustic pass: photons aimed into `aim`'s cones (the caustic targets' bounding spheres), stored
+/// only at the end of L S+ D paths. Empty (and free) when the scene has no caustics or nothing
+/// to aim at.
+template <class SceneT>
+[[nodiscard]] TracedPhotons trace_caustic_photons(const SceneT& scene, const PhotonTracingSettings& settings,
+                                                  const CausticAim<typename SceneT::scalar_type>& aim) {
     using S = typename SceneT::scalar_type;
-    if (!scene_has_caustics(scene)) return {};
-    std::vector<std::pair<Vec3<S>, S>> targets;
-    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
-        if (!scene.is_caustic_target(i)) continue;
-        const BBox<S> b = scene.object_bounds(i);
-        if (!b.is_finite()) continue;  // an infinite mirror plane cannot be aimed at
-        targets.push_back({b.center(), glm::length(b.extent()) * S(0.5)});
-    }
-    if (targets.empty()) return {};
+    if (aim.empty() || !scene_has_caustics(scene)) return {};
     const auto lights = scene.lights();
     const detail::EmissionPlan<S> plan(lights, settings.photons);
-    std::vector<std::vector<TargetCone<S>>> cones;
-    std::vector<S> total_solid_angle;
-    for (const auto& light : lights) {
-        cones.push_back(target_cones(light, targets));
-        S sum = 0;
-        for (const auto& c : cones.back()) sum += c.solid_angle;
-        total_solid_angle.push_back(sum);
-    }
     return detail::run_blocks(settings, 0x636175737469ULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);
         const Light<S>& light = lights[l];
-        const auto sample = sample_cone_mixture(cones[l], total_solid_angle[l], rng);
+        const auto sample = sample_cone_mixture(aim.cones[l], aim.total_solid_angle[l], rng);
         const auto& cone = light_cone(light);
         if (cone && !cone->contains(sample.direction)) return;
         // The photon carries I / (pdf * n): intensity over the density it was drawn with, where
         // plan.scale = power / n and I = power / emission solid angle.
         const Rgb<S> power = plan.scale[l] / (emission_solid_angle(light) * sample.pdf);
         const Vec3<S> origin = sample_emission_origin(light, sample.direction, rng.uniform2<S>());
-        detail::trace_photon_path(scene, Ray<S>{origin, sample.direction}, power, settings, true, rng, block);
+        detail::trace_photon_path(scene, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
     });
+}
+
+/// Caustic pass aimed at the scene's own caustic targets.
+template <class SceneT>
+[[nodiscard]] TracedPhotons trace_caustic_photons(const SceneT& scene, const PhotonTracingSettings& settings) {
+    return trace_caustic_photons(scene, settings, caustic_aim(scene));
 }
 
 }  // namespace photon

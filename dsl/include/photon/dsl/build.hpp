@@ -352,6 +352,9 @@ public:
         if (scene.lights().empty()) warn_(desc_.at, "the scene has no light_source: the image will be black");
     }
 
+    /// Where each object of the scene was written (a mesh or a union's objects share one place).
+    [[nodiscard]] const std::vector<SourceLocation>& object_locations() const noexcept { return object_at_; }
+
 private:
     struct Inherited {
         const Texture* texture = nullptr;
@@ -389,6 +392,7 @@ private:
             }
             const Transform& t = mine.transform;
             std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
+            object_at_.resize(scene_->objects().size(), o.at);
         } catch (const std::invalid_argument& e) {
             throw Error(o.at, e.what());
         }
@@ -517,6 +521,7 @@ private:
     Warnings& warn_;
     DefaultScene<S>* scene_ = nullptr;
     std::vector<std::pair<MaterialParams<S>, MaterialId>> materials_;
+    std::vector<SourceLocation> object_at_;
 };
 
 }  // namespace detail
@@ -540,8 +545,13 @@ template <Scalar S>
         throw Error(cam.at.known() ? cam.at : desc.at, e.what());
     }
     DefaultScene<S> scene;
-    detail::Builder<S>(desc, warn).add_all(scene);
+    detail::Builder<S> builder(desc, warn);
+    builder.add_all(scene);
     scene.commit();
+    // Said here, where the object's place in the file is known, for `check` and `render` alike
+    // (render() lists the same objects in RenderStats::warnings for programs using the library).
+    if (settings.mode != RenderMode::rt && settings.mode != RenderMode::reference && scene_has_caustics(scene))
+        for (std::uint32_t id : unaimed_specular_objects(scene)) warn(builder.object_locations()[id], unaimed_caustics_warning);
     return BuiltScene<S>{std::move(scene), *camera, std::move(settings)};
 }
 
