@@ -48,6 +48,8 @@ struct RenderStats {
     std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
     double precompute_seconds = 0, cache_seconds = 0, render_seconds = 0, total_seconds = 0;
     bool partial = false;  ///< cancelled before every pixel was rendered
+    /// What the user should know about this render's result (light the mode cannot see, objects
+    /// it serves less well), one sentence each; the CLI prints them as "photon: warning: ...".
     std::vector<RenderWarning> warnings;
 };
 
