@@ -65,6 +65,7 @@ public:
                                   caustic_irradiance(above, f.normal, ctx));
                 break;
             case RenderMode::reference: break;  // rendered by PathTracer
+            case RenderMode::sppm: break;       // rendered by render_sppm (sppm.hpp)
             }
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
