@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: MIT
+// The scene-class gallery (examples/scenes/classes, docs/scene-classes.md) judged at a small size:
+// each class is rendered with pm, pm-direct and (where the class has only direct light) rt, and by
+// a consistent judge twice with different seeds. The image is split into a 4 x 4 grid of blocks;
+// on every block holding more than 1% of the judge's light, pm must be within 3% of the judge's
+// mean, pm-direct within 5% and rt within the judge's noise. The judge's noise (from its two runs)
+// is measured, printed, and must be small enough for those tolerances to mean something.
+//
+// Today's pm loses light on several classes (the bias fixes are under way): those checks are in
+// `known_failures` below, with the error measured when they were recorded. A known failure is
+// reported, not failed, unless it grows well past its recorded size; when it passes, the test says
+// so and its line should be removed.
+
+#include <catch2/catch.hpp>
+
+#include "class_harness.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+using namespace classes;
+
+namespace {
+
+struct SceneClass {
+    const char* name;
+    bool direct_only;           ///< L D E only: rt must match the judge too
+    bool point_light_caustics;  ///< light from a point light through mirrors or glass onto a diffuse surface
+    unsigned judge_samples;     ///< per pixel, for each of the judge's two runs
+};
+
+// Judge samples per class, chosen so that the judge's block noise at 48 x 36 (rms over the blocks)
+// stays below max_judge_noise. The path tracer finds light that comes by way of a mirror or glass
+// (L S+ D E) only by hitting the light after the diffuse bounce, so those classes need many more.
+constexpr SceneClass scene_classes[] = {
+    {"diffuse-ball", false, false, 512},
+    {"mirror-plane", false, false, 16384},
+    {"glass-slab", false, false, 6144},
+    {"point-caustic", false, true, 1024},
+    {"cone-light", true, false, 256},
+    {"nested-glass", false, false, 2048},
+    {"mirror-corridor", false, false, 14336},
+    {"window-room", false, false, 1536},
+    {"scale-km", false, false, 512},
+    {"scale-mm", false, false, 512},
+    {"many-lights", true, false, 16},
+    {"mesh", false, false, 512},
+};
+
+/// The judge every class is measured against.
+const Judge& judge = path_tracer_judge;
+
+constexpr double pm_tolerance = 0.03, pm_direct_tolerance = 0.05;
+/// The judge's block noise (relative standard deviation of a block mean, from its two runs) for
+/// a 3% check to mean something: a 3% bias is then 4 standard deviations of the judge.
+constexpr double max_judge_noise = 0.0075;
+/// rt against the judge on direct-light-only classes: equal within 4 standard deviations of the
+/// judge's block noise, and never tighter than 0.5%. rt is rendered with as many samples per
+/// pixel as the judge (it is cheap), so that its own anti-aliasing noise is the judge's too.
+double rt_tolerance(const regions::RelativeNoise& noise) { return std::max(4.0 * noise.rms, 0.005); }
+
+/// Checks that fail with today's code, with the worst block bias measured when recorded (judge:
+/// the path tracer, 48 x 36, 4 x 4 blocks). Remove a line when its check passes.
+struct KnownFailure {
+    const char* scene;
+    const char* mode;
+    double recorded_bias;
+    const char* why;
+};
+constexpr KnownFailure known_failures[] = {
+    {"diffuse-ball", "pm", -0.057, "the floor next to the ball and the ball are dark"},
+    {"diffuse-ball", "pm-direct", +0.190, "the global map read directly blurs the contact shadow"},
+    {"mirror-plane", "pm", -0.441, "light the mirror sends onto the floor (L S D E) is lost"},
+    {"mirror-plane", "pm-direct", -0.457, "light the mirror sends onto the floor (L S D E) is lost"},
+    {"glass-slab", "pm-direct", +0.061, "the global map read directly blurs the slab's shadow edge"},
+    {"cone-light", "pm-direct", +0.173, "the global map read directly blurs the cones' sharp edges"},
+    {"nested-glass", "pm", -0.055, "dark under and around the glass"},
+    {"nested-glass", "pm-direct", +0.125, "the global map read directly blurs the caustics and shadows"},
+    {"mirror-corridor", "pm", -0.060, "dark floor between the mirrors"},
+    {"window-room", "pm", -0.263, "the indirectly lit room is dark"},
+    {"window-room", "pm-direct", -0.276, "the indirectly lit room is dark"},
+    {"scale-km", "pm", -0.139, "dark on the ball and in the corner"},
+    {"scale-km", "pm-direct", -0.092, "dark on the ball and in the corner"},
+    {"scale-mm", "pm", -0.139, "dark on the ball and in the corner"},
+    {"scale-mm", "pm-direct", -0.092, "dark on the ball and in the corner"},
+    {"mesh", "pm", -0.057, "the mesh and the floor next to it are dark"},
+    {"mesh", "pm-direct", -0.141, "the mesh and the floor next to it are dark"},
+};
+/// A known failure still fails when it grows this far (absolute) past its recorded size.
+constexpr double known_failure_slack = 0.03;
+
+const KnownFailure* known_failure(const std::string& scene, const std::string& mode) {
+    for (const auto& k : known_failures)
+        if (scene == k.scene && mode == k.mode) return &k;
+    return nullptr;
+}
+
+void check_verdict(const std::string& scene, const Verdict& v) {
+    INFO(scene << " " << v.mode << ": worst block " << percent(v.worst.bias) << ", tolerance "
+               << percent(v.tolerance).substr(1));
+    REQUIRE(v.worst.region >= 0);
+    if (const KnownFailure* k = known_failure(scene, v.mode)) {
+        if (v.passes())
+            WARN(scene << " " << v.mode << " is now within " << percent(v.tolerance).substr(1) << " ("
+                       << percent(v.worst.bias) << "): remove it from known_failures");
+        else
+            WARN(scene << " " << v.mode << ": known failure, " << percent(v.worst.bias) << " (recorded "
+                       << percent(k->recorded_bias) << ": " << k->why << ")");
+        CHECK(std::abs(v.worst.bias) <= std::abs(k->recorded_bias) + known_failure_slack);
+    } else {
+        CHECK(v.passes());
+    }
+}
+
+/// The table row of one class, printed to standard output (ctest -V shows it) and appended to
+/// scene-classes.tsv in the working directory.
+void report(const SceneClass& c, const Judgement& j, const std::vector<Verdict>& verdicts) {
+    std::ostringstream row;
+    char text[128];
+    std::snprintf(text, sizeof text, "judge %s noise %.2f%% rms, %.2f%% max, %.1f s", to_string(judge.mode),
+                  100.0 * j.noise.rms, 100.0 * j.noise.max, j.seconds);
+    row << "| " << c.name << " | " << text;
+    for (const auto& v : verdicts) row << " | " << v.mode << " " << describe(v, 4) << (v.passes() ? "" : " FAIL");
+    row << " |";
+    std::cout << row.str() << std::endl;
+    std::ofstream tsv("scene-classes.tsv", std::ios::app);
+    tsv << c.name << '\t' << to_string(judge.mode) << '\t' << j.noise.rms << '\t' << j.noise.max << '\t' << j.seconds;
+    for (const auto& v : verdicts) tsv << '\t' << v.mode << '\t' << v.worst.bias << '\t' << v.seconds;
+    tsv << '\n';
+}
+
+void judge_scene_class(const SceneClass& c) {
+    if (c.point_light_caustics && !judge.sees_point_light_caustics) {
+        WARN(c.name << ": skipped, the judge (" << to_string(judge.mode)
+                    << ") cannot see light from a point light through glass or mirrors");
+        return;
+    }
+    const Measurement m;
+    const Judgement j = judge_class(c.name, judge, c.judge_samples, m);
+    {
+        INFO(c.name << ": the judge's block noise is " << 100.0 * j.noise.rms << "% rms (" << 100.0 * j.noise.max
+                    << "% at worst); raise its samples");
+        CHECK(j.noise.rms <= max_judge_noise);
+    }
+    std::vector<Verdict> verdicts;
+    verdicts.push_back(verdict("pm", render_class(c.name, RenderMode::pm, m), j, pm_tolerance));
+    verdicts.push_back(verdict("pm-direct", render_class(c.name, RenderMode::pm_direct, m), j, pm_direct_tolerance));
+    if (c.direct_only) {
+        Measurement fine = m;
+        fine.samples_per_pixel = c.judge_samples;
+        verdicts.push_back(verdict("rt", render_class(c.name, RenderMode::rt, fine), j, rt_tolerance(j.noise)));
+    }
+    report(c, j, verdicts);
+    for (const auto& v : verdicts) check_verdict(c.name, v);
+}
+
+const SceneClass& scene_class(const std::string& name) {
+    for (const auto& c : scene_classes)
+        if (name == c.name) return c;
+    throw std::invalid_argument("no scene class " + name);
+}
+
+}  // namespace
+
+TEST_CASE("every scene class parses and builds without warnings and names its light paths", "[classes]") {
+    for (const auto& c : scene_classes) {
+        INFO(c.name);
+        std::vector<dsl::Diagnostic> warnings;
+        dsl::ParseOptions po;
+        po.diagnostics = [&](const dsl::Diagnostic& d) { warnings.push_back(d); };
+        const auto built = dsl::load_scene<float>(class_path(c.name), po);
+        CHECK(warnings.empty());
+        CHECK(!built.scene.lights().empty());
+        std::ifstream file(class_path(c.name));
+        const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+        CHECK(text.find("// Light paths: ") != std::string::npos);
+        CHECK(text.find("Scene class \"" + std::string(c.name) + "\"") != std::string::npos);
+    }
+}
+
+TEST_CASE("the many-lights class has 100 lights", "[classes]") {
+    const auto built = dsl::load_scene<float>(class_path("many-lights"));
+    CHECK(built.scene.lights().size() == 100);
+}
+
+// One test case per class, so that ctest runs them in parallel and names the one that fails.
+TEST_CASE("scene class diffuse-ball against the judge", "[classes][gallery]") { judge_scene_class(scene_class("diffuse-ball")); }
+TEST_CASE("scene class mirror-plane against the judge", "[classes][gallery]") { judge_scene_class(scene_class("mirror-plane")); }
+TEST_CASE("scene class glass-slab against the judge", "[classes][gallery]") { judge_scene_class(scene_class("glass-slab")); }
+TEST_CASE("scene class point-caustic against the judge", "[classes][gallery]") { judge_scene_class(scene_class("point-caustic")); }
+TEST_CASE("scene class cone-light against the judge", "[classes][gallery]") { judge_scene_class(scene_class("cone-light")); }
+TEST_CASE("scene class nested-glass against the judge", "[classes][gallery]") { judge_scene_class(scene_class("nested-glass")); }
+TEST_CASE("scene class mirror-corridor against the judge", "[classes][gallery]") { judge_scene_class(scene_class("mirror-corridor")); }
+TEST_CASE("scene class window-room against the judge", "[classes][gallery]") { judge_scene_class(scene_class("window-room")); }
+TEST_CASE("scene class scale-km against the judge", "[classes][gallery]") { judge_scene_class(scene_class("scale-km")); }
+TEST_CASE("scene class scale-mm against the judge", "[classes][gallery]") { judge_scene_class(scene_class("scale-mm")); }
+TEST_CASE("scene class many-lights against the judge", "[classes][gallery]") { judge_scene_class(scene_class("many-lights")); }
+TEST_CASE("scene class mesh against the judge", "[classes][gallery]") { judge_scene_class(scene_class("mesh")); }
+
+TEST_CASE("scale-km and scale-mm, the same scene 10^6 times apart, render alike", "[classes][gallery]") {
+    const Measurement m;
+    for (const RenderMode mode : {RenderMode::rt, RenderMode::pm}) {
+        const Render km = render_class("scale-km", mode, m), mm = render_class("scale-mm", mode, m);
+        const auto lit = regions::lit_regions(km.blocks, std::vector<double>(km.blocks.size(), 1.0), m.min_light_fraction);
+        const auto worst = regions::worst_bias(mm.blocks, km.blocks, lit);
+        INFO(to_string(mode) << ": scale-mm / scale-km - 1 is " << percent(worst.bias) << " on block " << worst.region);
+        std::cout << "scale-mm against scale-km, " << to_string(mode) << ": worst block " << percent(worst.bias) << std::endl;
+        // rt is direct light by shadow rays: the same strata at either scale. pm adds photon noise.
+        CHECK(std::abs(worst.bias) <= (mode == RenderMode::rt ? 0.005 : pm_tolerance));
+    }
+}
