@@ -53,6 +53,13 @@ inline constexpr double bytes_per_stored_photon = 3.0 * sizeof(Photon) + 8.0 + 2
         m.photon_maps = (double(s.global_photons) + double(s.caustic_photons)) * per_photon +
                         double(s.global_photons) * irradiance;
     }
+    if (s.mode == RenderMode::sppm) {
+        // Per pixel: its statistics (SppmPixel, 64 bytes). Per photon hit of one pass: the traced
+        // record, the kd-tree's position and payload, and the build's two item arrays and index.
+        m.film += pixels * 64.0;
+        const double per_hit = 36.0 + 12.0 + 24.0 + 2.0 * 16.0 + 4.0;
+        m.photon_maps = double(s.sppm_photons_per_pass) * stores_per_photon(max_albedo, s.max_photon_depth) * per_hit;
+    }
     return m;
 }
 

@@ -62,6 +62,7 @@ public:
                                   map_irradiance(maps_.caustic, settings_.caustic_estimate, above, f.normal, ctx));
                 break;
             case RenderMode::reference: break;  // rendered by PathTracer
+            case RenderMode::sppm: break;       // rendered by render_sppm (sppm.hpp)
             }
         }
         if (depth < settings_.max_ray_depth && material.is_specular())

@@ -14,6 +14,7 @@
 #include "memory_budget.hpp"
 #include "path_tracer.hpp"
 #include "radiance.hpp"
+#include "sppm.hpp"
 
 namespace photon {
 
@@ -87,7 +88,8 @@ template <class SceneT>
 template <class SceneT>
 [[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const RenderSettings& settings, RenderStats& stats) {
     PhotonMaps maps;
-    if (settings.mode == RenderMode::rt || settings.mode == RenderMode::reference) return maps;
+    if (settings.mode == RenderMode::rt || settings.mode == RenderMode::reference || settings.mode == RenderMode::sppm)
+        return maps;
     auto settle = [](std::optional<PhotonMap>& map, TracedPhotons&& traced, PhotonMapStats& st) {
         st.emitted = traced.emitted;
         st.rays = traced.rays;
@@ -195,6 +197,11 @@ template <class SceneT>
     stats.height = settings.height;
     stats.threads = resolve_threads(settings.threads);
     stats.mode = to_string(settings.mode);
+    if (settings.mode == RenderMode::sppm) {  // passes of its own (integrator/sppm.hpp)
+        result.film = render_sppm(scene, camera, settings, stats);
+        stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+    }
     PhotonMaps maps = build_photon_maps(scene, settings, stats);
     if (settings.cancel && settings.cancel->load()) {
         result.film = Film(settings.width, settings.height);  // nothing rendered yet

@@ -28,10 +28,21 @@ struct PhotonMapStats {
     double trace_seconds = 0, build_seconds = 0;
 };
 
+/// What a stochastic progressive photon mapping render did (integrator/sppm.hpp).
+struct SppmStats {
+    unsigned passes = 0;              ///< passes completed
+    std::uint64_t emitted = 0;        ///< photons emitted over all passes
+    std::uint64_t photon_hits = 0;    ///< diffuse photon hits (after the first bounce) over all passes
+    std::uint64_t photon_rays = 0;    ///< photon rays traced over all passes
+    double mean_radius = 0;           ///< gathering radius at the end, averaged over pixels that have one
+    double photon_seconds = 0, gather_seconds = 0;  ///< photon tracing and tree building; camera pass and gathering
+};
+
 struct RenderStats {
     unsigned width = 0, height = 0, threads = 0;
     std::string mode;
     PhotonMapStats global, caustic;
+    SppmStats sppm;
     RayCounts rays;
     std::uint64_t estimates = 0;  ///< photon map density estimates
     std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
@@ -59,7 +70,11 @@ struct RenderStats {
     row("caustic map", "%llu emitted, %llu stored, %.1f MiB, trace %.2f s, build %.2f s",
         (unsigned long long)s.caustic.emitted, (unsigned long long)s.caustic.stored, mib(s.caustic.memory_bytes),
         s.caustic.trace_seconds, s.caustic.build_seconds);
-    row("photon rays", "%llu", (unsigned long long)(s.global.rays + s.caustic.rays));
+    if (s.sppm.passes > 0)
+        row("sppm", "%u passes, %llu photons emitted, %llu hits, mean radius %.4g, photons %.2f s, camera %.2f s",
+            s.sppm.passes, (unsigned long long)s.sppm.emitted, (unsigned long long)s.sppm.photon_hits,
+            s.sppm.mean_radius, s.sppm.photon_seconds, s.sppm.gather_seconds);
+    row("photon rays", "%llu", (unsigned long long)(s.global.rays + s.caustic.rays + s.sppm.photon_rays));
     row("rays (pass 2)", "%llu total: camera %llu, shadow %llu, reflection %llu,", (unsigned long long)s.rays.total(),
         (unsigned long long)s.rays.camera, (unsigned long long)s.rays.shadow, (unsigned long long)s.rays.reflection);
     row("", "refraction %llu, gather %llu, probe %llu", (unsigned long long)s.rays.refraction,

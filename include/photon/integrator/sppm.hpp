@@ -1,0 +1,285 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Stochastic progressive photon mapping (Hachisuka and Jensen 2009, "Stochastic Progressive
+// Photon Mapping"): the consistent judge of the other modes. Each pass traces one camera path
+// per pixel to a visible point (sppm_visible_points.hpp) and a fresh set of photons; every pixel
+// keeps a radius R, a photon count N and a flux tau, and after each pass
+//   N' = N + alpha M,   R' = R sqrt((N + alpha M) / (N + M)),   tau' = (tau + Phi_M) R'^2 / R^2
+// for the M photons (of flux Phi_M) found within R of its visible point. R shrinks to 0 while N
+// grows without bound, so bias and noise both vanish: unlike the two-pass photon map, any path
+// (L S+ D S+ E from a point light included, which the path tracer cannot find) converges to the
+// right answer. Direct light comes from shadow rays; photons supply only light that bounced at
+// least once after leaving the light, so nothing is counted twice.
+//
+// Deterministic for any thread count: photons are traced in fixed blocks with one random stream
+// per photon and pass, concatenated in block order into a kd-tree; each pixel gathers from it in
+// the tree's order, summing in double, with its own stream per pass.
+
+#include <chrono>
+#include <functional>
+#include <mutex>
+#include <vector>
+
+#include "../film/film.hpp"
+#include "../light/light.hpp"
+#include "../parallel/parallel_for.hpp"
+#include "../photonmap/kdtree.hpp"
+#include "../tracing/light_allocation.hpp"
+#include "memory_budget.hpp"
+#include "sppm_visible_points.hpp"
+
+namespace photon {
+
+/// The fraction of a pass's photons each pixel keeps (Hachisuka and Jensen's alpha): the radius
+/// shrinks as n^-(1 - alpha)/2 with passes; 2/3 is their choice, balancing noise against bias.
+inline constexpr double sppm_alpha = 2.0 / 3.0;
+
+/// Automatic initial radius, in pixel footprints at the pixel's first visible point: blur of
+/// about what the image resolves anyway, at any scene scale and resolution (docs/design.md).
+inline constexpr double sppm_radius_in_pixels = 2.0;
+
+/// A photon where it met a diffuse surface after at least one bounce.
+struct SppmPhoton {
+    Vec3<float> position;
+    Rgb<float> power;
+    Vec3<float> side;  ///< unit surface normal on the side the photon arrived from
+};
+
+template <> struct point_traits<SppmPhoton> {
+    struct payload_type {
+        Rgb<float> power;
+        Vec3<float> side;
+    };
+    [[nodiscard]] static Vec3<float> position(const SppmPhoton& p) noexcept { return p.position; }
+    [[nodiscard]] static payload_type payload(const SppmPhoton& p) noexcept { return {p.power, p.side}; }
+};
+
+/// The statistics of one pixel, over all passes so far (double: thousands of passes add up).
+struct SppmPixel {
+    double radius = 0;  ///< 0 until the pixel's first visible point
+    double photons = 0;  ///< N
+    Rgb<double> flux{0.0};    ///< tau
+    Rgb<double> direct{0.0};  ///< sum over passes of the shadow-ray light
+};
+
+/// Called after every pass with the number of passes done and the image they give.
+using SppmPassCallback = std::function<void(unsigned passes, const Film& film)>;
+
+namespace detail {
+
+constexpr std::size_t sppm_photon_block = 1024;  ///< photons per work unit, fixed for determinism
+constexpr std::uint64_t sppm_photon_salt = 0x7370706d70686fULL, sppm_camera_salt = 0x7370706d63616dULL,
+                        sppm_scramble_salt = 0x7370706d736372ULL;
+
+/// The seed of pass `pass`'s random streams.
+[[nodiscard]] constexpr std::uint64_t sppm_pass_seed(std::uint64_t seed, std::uint64_t salt, unsigned pass) noexcept {
+    return mix64(seed ^ salt) ^ mix64(std::uint64_t(pass) + 1);
+}
+
+/// Photon index -> light and the power each of its photons carries (a pass emits, in total, the
+/// lights' power).
+template <Scalar S> struct SppmEmission {
+    std::vector<std::size_t> first;
+    std::vector<Rgb<S>> power;
+    SppmEmission(std::span<const Light<S>> lights, std::size_t photons) {
+        const std::vector<std::size_t> counts = photons_per_light<S>(lights, photons);
+        std::size_t at = 0;
+        for (std::size_t l = 0; l < counts.size(); ++l) {
+            first.push_back(at);
+            power.push_back(counts[l] ? light_power(lights[l]) / S(counts[l]) : Rgb<S>(S(0)));
+            at += counts[l];
+        }
+    }
+    [[nodiscard]] std::size_t light_of(std::size_t photon) const noexcept {
+        std::size_t l = 0;
+        while (l + 1 < first.size() && first[l + 1] <= photon) ++l;
+        return l;
+    }
+};
+
+struct SppmPhotonPass {
+    std::vector<SppmPhoton> hits;
+    std::uint64_t rays = 0;
+};
+
+/// One pass's photons: emitted by power among the lights, followed by Russian roulette for at
+/// most settings.max_photon_depth surface hits, recorded at every diffuse hit but the first.
+template <class SceneT>
+[[nodiscard]] SppmPhotonPass trace_sppm_photons(const SceneT& scene, const SppmEmission<typename SceneT::scalar_type>& plan,
+                                                const RenderSettings& settings, unsigned pass) {
+    using S = typename SceneT::scalar_type;
+    const auto lights = scene.lights();
+    if (plan.first.empty()) return {};  // no lights
+    const std::size_t n = settings.sppm_photons_per_pass;
+    const std::size_t blocks = (n + sppm_photon_block - 1) / sppm_photon_block;
+    std::vector<SppmPhotonPass> out(blocks);
+    const std::uint64_t seed = sppm_pass_seed(settings.seed, sppm_photon_salt, pass);
+    parallel_for(blocks, 1, settings.threads, [&](std::size_t b0, std::size_t b1) {
+        for (std::size_t b = b0; b < b1; ++b) {
+            SppmPhotonPass& block = out[b];
+            for (std::size_t i = b * sppm_photon_block; i < std::min(n, (b + 1) * sppm_photon_block); ++i) {
+                Pcg32 rng(seed, i);
+                const std::size_t l = plan.light_of(i);
+                if (is_black(plan.power[l])) continue;
+                const Vec3<S> dir = sample_emission_direction(lights[l], settings.emission, rng);
+                Ray<S> ray{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
+                Rgb<S> power = plan.power[l];
+                for (unsigned depth = 0; depth < settings.max_photon_depth; ++depth) {
+                    const auto surface = scene.intersect(ray);
+                    ++block.rays;
+                    if (!surface) break;
+                    const Material<S>& material = *surface->material;
+                    const Facing<S> f = facing(surface->hit.normal, ray.direction);
+                    // Depth 0 is direct light, which the shadow rays of the camera pass cover.
+                    if (depth > 0 && material.has_diffuse())
+                        block.hits.push_back({Vec3<float>(surface->hit.point), Rgb<float>(power), Vec3<float>(f.normal)});
+                    const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, rng);
+                    if (s.event == ScatterEvent::absorbed) break;
+                    power *= s.weight;
+                    const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
+                    ray = Ray<S>{offset_origin(surface->hit.point, side, intersection_error(surface->hit.point, ray.origin)),
+                                 s.direction};
+                }
+            }
+        }
+    });
+    SppmPhotonPass all;
+    std::size_t total = 0;
+    for (const auto& b : out) total += b.hits.size();
+    all.hits.reserve(total);
+    for (auto& b : out) {
+        all.hits.insert(all.hits.end(), b.hits.begin(), b.hits.end());
+        all.rays += b.rays;
+        std::vector<SppmPhoton>().swap(b.hits);
+    }
+    return all;
+}
+
+/// Sums the photons within a visible point's radius that arrived on its side of the surface
+/// and lie within R/2 of its tangent plane. The slab keeps photons of parallel surfaces closer
+/// than R (a thin shelf over the floor, a box lid) out, yet keeps every photon of a sphere of
+/// radius >= R: those lie at most R^2 / (2 rho) <= R/2 off the plane, and the ball of radius R
+/// around a point of a sphere cuts exactly the area pi R^2 from it (Archimedes), so curved
+/// surfaces need no correction.
+struct SppmGather {
+    const KdTree<SppmPhoton>& tree;
+    Vec3<float> x, n;
+    float radius2, slab;
+    Rgb<double> power{0.0};
+    std::uint64_t count = 0;
+
+    [[nodiscard]] float max_distance2() const noexcept { return radius2; }
+    void visit(std::uint32_t i, float) noexcept {
+        if (std::abs(glm::dot(tree.position(i) - x, n)) > slab) return;
+        const auto& p = tree.payload(i);
+        if (!(glm::dot(p.side, n) > 0.0f)) return;
+        power += Rgb<double>(p.power);
+        ++count;
+    }
+};
+
+/// The progressive update of one pixel with M photons of summed power `power` found this pass
+/// at a visible point of weight `weight`.
+inline void sppm_update(SppmPixel& px, std::uint64_t m, const Rgb<double>& power, const Rgb<double>& weight) noexcept {
+    if (m == 0) return;
+    const double n_next = px.photons + sppm_alpha * double(m);
+    const double shrink2 = n_next / (px.photons + double(m));  // R'^2 / R^2
+    px.flux = (px.flux + weight * power) * shrink2;
+    px.photons = n_next;
+    px.radius *= std::sqrt(shrink2);
+}
+
+/// The image after `passes` passes: mean direct light + tau / (pi R^2 passes). Each pass's
+/// photons carry the lights' whole power, so dividing by the passes is Hachisuka and Jensen's
+/// division by the photons emitted with photons of power Phi / (photons per pass).
+inline Film sppm_film(const std::vector<SppmPixel>& pixels, unsigned width, unsigned height, unsigned passes) {
+    Film film(width, height);
+    if (passes == 0) return film;
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        const SppmPixel& px = pixels[i];
+        Rgb<double> l = px.direct / double(passes);
+        if (px.radius > 0) l += px.flux / (pi<double> * px.radius * px.radius * double(passes));
+        film.pixels()[i] = Rgb<float>(l);
+    }
+    return film;
+}
+
+}  // namespace detail
+
+/// Renders by stochastic progressive photon mapping: settings.sppm_passes passes of one camera
+/// path per pixel and settings.sppm_photons_per_pass photons, reporting RenderPhase::sppm_pass
+/// after each; `on_pass`, if given, sees the image after every pass. Cancelling stops after the
+/// current pass (stats.partial). Fills stats.sppm, stats.rays and the times.
+template <class SceneT>
+[[nodiscard]] Film render_sppm(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+                               const RenderSettings& settings, RenderStats& stats, const SppmPassCallback& on_pass = {}) {
+    using S = typename SceneT::scalar_type;
+    validate(settings);
+    const auto start = std::chrono::steady_clock::now();
+    const unsigned width = settings.width, height = settings.height;
+    std::vector<SppmPixel> pixels(std::size_t(width) * height);
+    const detail::SppmEmission<S> plan(scene.lights(), settings.sppm_photons_per_pass);
+    const double footprint = double(pixel_angle(camera, width, height)) * sppm_radius_in_pixels;
+    auto seconds_since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+    unsigned pass = 0;
+    for (; pass < settings.sppm_passes; ++pass) {
+        if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
+            stats.partial = true;
+            break;
+        }
+        const auto photons_start = std::chrono::steady_clock::now();
+        detail::SppmPhotonPass photons = detail::trace_sppm_photons(scene, plan, settings, pass);
+        const KdTree<SppmPhoton> tree(std::span<const SppmPhoton>(photons.hits), {.threads = settings.threads});
+        stats.sppm.photon_hits += photons.hits.size();
+        stats.sppm.photon_rays += photons.rays;
+        std::vector<SppmPhoton>().swap(photons.hits);
+        stats.sppm.photon_seconds += seconds_since(photons_start);
+
+        const auto gather_start = std::chrono::steady_clock::now();
+        const std::uint64_t camera_seed = detail::sppm_pass_seed(settings.seed, detail::sppm_camera_salt, pass);
+        std::mutex merge;
+        parallel_for(height, 1, settings.threads, [&](std::size_t y0, std::size_t y1) {
+            ShadingContext ctx;
+            for (std::size_t y = y0; y < y1; ++y) {
+                for (unsigned x = 0; x < width; ++x) {
+                    const std::uint64_t index = std::uint64_t(y) * width + x;
+                    SppmPixel& px = pixels[index];
+                    Pcg32 scramble(settings.seed ^ detail::sppm_scramble_salt, index);
+                    const std::uint32_t sx = scramble.next_u32(), sy = scramble.next_u32();
+                    const Vec2<double> jitter = progressive_pixel_sample(pass, sx, sy);
+                    ctx.rng = Pcg32(camera_seed, index);
+                    ++ctx.rays.camera;
+                    const Ray<S> ray = camera.ray(S((double(x) + jitter.x) / width), S((double(y) + jitter.y) / height));
+                    const CameraPath<S> path = trace_camera_path(scene, ray, settings, ctx);
+                    px.direct += Rgb<double>(path.direct);
+                    if (!path.point) continue;
+                    const VisiblePoint<S>& vp = *path.point;
+                    if (px.radius == 0)
+                        px.radius = settings.sppm_initial_radius > 0 ? double(settings.sppm_initial_radius)
+                                                                     : footprint * double(vp.path_length);
+                    if (tree.empty() || !(px.radius > 0)) continue;
+                    const float r = float(px.radius);
+                    detail::SppmGather gather{tree, Vec3<float>(vp.position), Vec3<float>(vp.normal), r * r, 0.5f * r};
+                    tree.search(gather.x, gather);
+                    detail::sppm_update(px, gather.count, gather.power, Rgb<double>(vp.weight));
+                }
+            }
+            const std::lock_guard lock(merge);
+            stats.rays += ctx.rays;
+        });
+        stats.sppm.gather_seconds += seconds_since(gather_start);
+        stats.sppm.emitted += settings.sppm_photons_per_pass;
+        stats.sppm.passes = pass + 1;
+        if (settings.progress) settings.progress(RenderPhase::sppm_pass, double(pass + 1) / double(settings.sppm_passes));
+        if (on_pass) on_pass(pass + 1, detail::sppm_film(pixels, width, height, pass + 1));
+    }
+    double radius_sum = 0;
+    std::size_t with_radius = 0;
+    for (const SppmPixel& px : pixels)
+        if (px.radius > 0) radius_sum += px.radius, ++with_radius;
+    stats.sppm.mean_radius = with_radius ? radius_sum / double(with_radius) : 0.0;
+    stats.render_seconds = seconds_since(start);
+    return detail::sppm_film(pixels, width, height, pass);
+}
+
+}  // namespace photon
