@@ -25,19 +25,43 @@ inline std::filesystem::path class_path(const std::string& name) {
     return std::filesystem::path(PHOTON_CLASSES_DIR) / (name + ".pov");
 }
 
+/// A class of the gallery and what it needs to be judged.
+struct SceneClass {
+    const char* name;
+    bool direct_only;           ///< L D E only: rt must match the judge too
+    bool point_light_caustics;  ///< light from a point light through mirrors or glass onto a diffuse surface
+    unsigned reference_samples; ///< path tracer: samples per pixel of each of the judge's two runs
+    unsigned sppm_passes;       ///< sppm: passes of each run
+};
+
 /// A renderer that judges the others: its mode, how its effort is set, and which paths it sees.
 struct Judge {
     RenderMode mode;
     /// Whether it finds light that reaches a diffuse surface from a point light through mirrors
     /// or glass (L S+ D E with a point light). A path tracer cannot: it would have to hit a point.
     bool sees_point_light_caustics;
-    /// Sets the judge's effort to `samples` (samples per pixel, or passes).
-    void (*set_samples)(RenderSettings&, unsigned samples);
+    /// Sets the judge's effort for a class (samples per pixel, or passes).
+    void (*configure)(RenderSettings&, const SceneClass&);
 };
 
 /// The path tracer (--mode reference): unbiased, but blind to point-light caustics.
-inline const Judge path_tracer_judge{RenderMode::reference, false,
-                                     [](RenderSettings& s, unsigned samples) { s.samples_per_pixel = samples; }};
+inline const Judge path_tracer_judge{RenderMode::reference, false, [](RenderSettings& s, const SceneClass& c) {
+                                         s.samples_per_pixel = c.reference_samples;
+                                     }};
+
+/// Photons per sppm pass at the test's small image: the pass count, not the photons, is what
+/// shrinks the radii, so many small passes converge faster than few big ones.
+inline constexpr std::size_t sppm_judge_photons_per_pass = 20'000;
+
+/// Stochastic progressive photon mapping (--mode sppm): consistent, sees every path. Its
+/// photons follow up to 100 bounces (the files' max_photon_depth is pm's setting, not the
+/// scene's), and one shadow ray per light and pass (the passes average them).
+inline const Judge sppm_judge{RenderMode::sppm, true, [](RenderSettings& s, const SceneClass& c) {
+                                  s.sppm_passes = c.sppm_passes;
+                                  s.sppm_photons_per_pass = sppm_judge_photons_per_pass;
+                                  s.max_photon_depth = 100;
+                                  s.shadow_samples = 1;
+                              }};
 
 /// The image size, grid and thresholds of the measurement.
 struct Measurement {
@@ -86,11 +110,11 @@ struct Judgement {
     double seconds = 0.0;             ///< both runs
 };
 
-inline Judgement judge_class(const std::string& name, const Judge& judge, unsigned samples, const Measurement& m) {
+inline Judgement judge_class(const SceneClass& c, const Judge& judge, const Measurement& m) {
     Render runs[2];
     for (unsigned i = 0; i < 2; ++i)
-        runs[i] = render_class(name, judge.mode, m, [&](RenderSettings& s) {
-            judge.set_samples(s, samples);
+        runs[i] = render_class(c.name, judge.mode, m, [&](RenderSettings& s) {
+            judge.configure(s, c);
             s.seed = 1 + i;
         });
     Judgement j;
