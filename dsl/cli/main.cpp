@@ -123,6 +123,7 @@ struct RenderOptions {
     std::string mode;
     float exposure = 1.0f;
     bool no_stats = false;
+    bool no_mis = false;
 };
 
 std::string vec(const photon::Vec3<float>& v) {
@@ -149,6 +150,7 @@ std::string settings_line(const photon::RenderSettings& s) {
           << s.global_estimate.max_radius << "), " << s.caustic_photons << " caustic (k " << s.caustic_estimate.k
           << ", radius " << s.caustic_estimate.max_radius << "), photon depth " << s.max_photon_depth
           << ", final gather " << s.final_gather_rays;
+    if (s.mode == photon::RenderMode::reference && !s.reference_mis) o << ", no MIS";
     o << ", seed " << s.seed;
     return o.str();
 }
@@ -287,6 +289,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
     if (so.failed_strict()) return exit_error;
     photon::RenderSettings& settings = built.settings;
+    if (ro.no_mis) settings.reference_mis = false;
     if (!so.quiet) {
         std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
                   << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "
@@ -327,6 +330,8 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
         std::cerr << "photon: wrote " << written.string()
                   << (partial ? " (PARTIAL: interrupted, marked photon:partial=true)" : "") << '\n';
     }
+    if (!so.quiet || so.strict)
+        for (const std::string& warning : result.stats.warnings) std::cerr << "photon: warning: " << warning << '\n';
     if (!ro.no_stats && !so.quiet) std::cout << photon::format_stats(result.stats);
     return partial ? exit_interrupted : EXIT_SUCCESS;
 }
@@ -408,7 +413,9 @@ int main(int argc, char** argv) {
         ->add_option("--mode", ro.mode,
                      "rt: ray tracing, direct light only; pm: photon mapping (global illumination); "
                      "pm-direct: everything read from the photon maps; reference: path tracing, "
-                     "slow and unbiased, to check the others against")
+                     "slow and unbiased, to check the others against, except that it cannot see light "
+                     "from point lights through mirrors or glass onto diffuse surfaces (renders it black) "
+                     "and finds sphere-light caustics by chance (noisy)")
         ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct", "reference"}));
     render->add_option("--global-photons", ro.global_photons, "Photons emitted for the global map");
     render->add_option("--caustic-photons", ro.caustic_photons,
@@ -438,6 +445,9 @@ int main(int argc, char** argv) {
     render->add_option("--exposure", ro.exposure, "Multiplies radiance before 8-bit output (PNG, JPEG)")
         ->check(CLI::PositiveNumber);
     render->add_flag("--no-stats", ro.no_stats, "Do not print the statistics table");
+    render->add_flag("--no-mis", ro.no_mis,
+                     "reference: direct light by shadow rays alone, without multiple importance sampling "
+                     "(to measure what it gains)");
 
     CLI::App* check = app.add_subcommand("check", "Read and build a scene, report what it holds and any warnings");
     so.add_to(*check);

@@ -37,6 +37,13 @@ expect 0 "$photon" render "$scenes/room1.pov" -o "$work/room1.exr" $tiny --mode 
 [ -s "$work/out" ] && fail "-q printed something"
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/reference.exr" $tiny --mode reference
 grep -q "mode reference" "$work/out" || fail "--mode reference: not a reference render"
+grep -q "photon: warning:" "$work/err" && fail "--mode reference: a warning for a scene with a sphere light only"
+# A point light over glass: the reference cannot see its caustic and says so.
+printf 'camera { location <0,1,-2> look_at <0,0,0> }\nlight_source { <0,2,0>, rgb 1 }\nplane { y, 0 pigment { rgb 0.5 } }\nsphere { <0,0.5,0>, 0.3 pigment { rgbf 1 } finish { reflection { 0, 1 fresnel on } } interior { ior 1.5 } }\n' >"$work/point.pov"
+expect 0 "$photon" render "$work/point.pov" -o "$work/point.exr" $tiny --mode reference --no-mis
+grep -q "photon: warning: mode reference cannot see light from point lights through mirrors or glass" "$work/err" ||
+    fail "--mode reference: no warning for a point light over glass"
+grep -q "no MIS" "$work/err" || fail "--no-mis: not in the settings line"
 
 printf 'sphere { <0,0,0>, -1 }\n' >"$work/bad.pov"
 expect 1 "$photon" render "$work/bad.pov" -o "$work/bad.png"

@@ -21,6 +21,17 @@ namespace photon {
     return n == 0 ? 1 : n;
 }
 
+/// POV-Ray's phong term for light arriving from unit `wi`, seen from `wo`: strength *
+/// cos(alpha)^size, alpha between the mirrored light direction and the viewer; E / pi converts
+/// it to radiance units. Direct light only: it is not a BRDF that paths could sample.
+template <Scalar S>
+[[nodiscard]] S phong_highlight(const Material<S>& material, const Vec3<S>& n, const Vec3<S>& wo, const Vec3<S>& wi) noexcept {
+    const S phong = material.params().phong;
+    if (!(phong > S(0))) return S(0);
+    const S c = glm::dot(reflect(-wi, n), wo);
+    return c > S(0) ? phong * std::pow(c, material.params().phong_exponent) * inv_pi<S> : S(0);
+}
+
 /// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
 /// side, from every light, by shadow rays leaving from `shadow_origin` (x offset off the surface).
 /// The light is evaluated at x itself, not at the offset origin: the offset grows with the
@@ -59,12 +70,7 @@ template <class SceneT, Scalar S>
             const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
             if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
             Rgb<S> f = brdf * cos_theta;
-            if (phong > S(0)) {
-                // POV-Ray's phong term: strength * cos(alpha)^size, alpha between the mirrored
-                // light direction and the viewer; E / pi converts to radiance units.
-                const S c = glm::dot(reflect(-incident->direction, n), wo);
-                if (c > S(0)) f += Rgb<S>(phong * std::pow(c, material.params().phong_exponent) * inv_pi<S>);
-            }
+            if (phong > S(0)) f += Rgb<S>(phong_highlight(material, n, wo, incident->direction));
             sum += f * incident->irradiance;
         }
         total += sum / S(count);

@@ -2,19 +2,50 @@
 #pragma once
 // Reference solution: unbiased path tracing (Kajiya 1986) of the same light paths the photon
 // mapper renders, to measure the photon mapper's error. Slow by design; not a rendering mode
-// for pictures. At each diffuse vertex the lights are sampled by a shadow ray; a path continues
-// by the same Russian roulette as photons. Lights stay invisible to camera and mirror rays (as
-// in every other mode), but a path that reaches a sphere light through mirrors or glass after a
-// diffuse vertex collects its radiance: that is how path tracing finds caustics (L S+ D E).
+// for pictures. A path continues by the same Russian roulette as photons. Lights stay invisible
+// to camera and mirror rays (as in every other mode).
+//
+// Direct light at a diffuse vertex has two strategies, combined by multiple importance sampling
+// (Veach 1997, power heuristic): one shadow ray per light (IncidentSampler's cone), and the
+// vertex's own diffuse continuation when it meets a sphere light. Light met after mirrors or
+// glass that follow a diffuse vertex (caustics, L S+ D E) has one strategy only, the path's
+// continuation: it counts with weight 1, and it is found by chance, so it is noisy. Through
+// mirrors or glass a point light is never met: those caustics are missing (black).
 
 #include <limits>
+#include <string>
 
 #include "../geometry/offset.hpp"
+#include "../light/light_sample.hpp"
 #include "../material/scatter.hpp"
 #include "direct_lighting.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
+
+/// Veach's power heuristic (beta = 2) for one sample of each of two strategies: the weight of
+/// the strategy of density `pdf` against the other's `other`. Written as 1 / (1 + (b/a)^2) so
+/// that the densities of tiny lights (1e11 per steradian and more) cannot overflow.
+template <Scalar S> [[nodiscard]] S power_heuristic(S pdf, S other) noexcept {
+    if (!(pdf > S(0))) return S(0);
+    const S ratio = other / pdf;
+    return S(1) / (S(1) + ratio * ratio);
+}
+
+/// What the reference cannot see in `scene`, as a sentence (empty when it sees everything): a
+/// point light shining through mirrors or glass onto diffuse surfaces (L S+ D E) is a path no
+/// path tracer samples, so it renders black.
+template <class SceneT> [[nodiscard]] std::string reference_blind_spot(const SceneT& scene) {
+    bool point_light = false, specular = false, diffuse = false;
+    for (const auto& light : scene.lights()) point_light = point_light || (light_radius(light) == 0 && !is_black(light_power(light)));
+    for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
+        specular = specular || scene.material_of(i).is_specular();
+        diffuse = diffuse || scene.material_of(i).has_diffuse();
+    }
+    if (!point_light || !specular || !diffuse) return {};
+    return "mode reference cannot see light from point lights through mirrors or glass onto diffuse surfaces "
+           "(L S+ D E caustics): it renders them black; use sphere lights (area_light) for a complete reference";
+}
 
 template <class SceneT> class PathTracer {
 public:
@@ -22,63 +53,100 @@ public:
 
     static constexpr unsigned max_vertices = 256;  ///< a backstop; Russian roulette ends paths first
 
-    PathTracer(const SceneT& scene, const RenderSettings& settings) noexcept : scene_(scene), settings_(settings) {}
+    PathTracer(const SceneT& scene, const RenderSettings& settings) noexcept
+        : scene_(scene), mis_(settings.reference_mis) {}
 
     [[nodiscard]] Rgb<S> radiance(Ray<S> ray, ShadingContext& ctx) const {
         Rgb<S> result(S(0)), throughput(S(1));
-        // Light met by a ray is counted only on a specular chain that follows a diffuse vertex:
-        // a ray straight out of a diffuse vertex was already covered by that vertex's shadow ray.
-        bool after_diffuse = false, specular_chain = false;
+        Arrival arrival;
         for (unsigned vertex = 0; vertex < max_vertices; ++vertex) {
             const auto surface = scene_.intersect(ray);
-            if (after_diffuse && specular_chain)
-                result += throughput * light_radiance(ray, surface ? surface->hit.t : std::numeric_limits<S>::infinity());
+            if (arrival.kind != Arrival::unseen) result += throughput * lights_met(ray, surface, arrival, ctx);
             if (!surface) break;
             const Material<S>& material = *surface->material;
             const Facing<S> f = facing(surface->hit.normal, ray.direction);
-            const S error = intersection_error(surface->hit.point, ray.origin);
-            if (material.has_diffuse()) {
-                const Vec3<S> above = offset_origin(surface->hit.point, f.normal, error);
-                result += throughput * direct_lighting(scene_, surface->hit.point, above, f.normal, -ray.direction, material, 1, ctx);
-            }
+            const Vec3<S>& x = surface->hit.point;
+            const S error = intersection_error(x, ray.origin);
+            // Russian roulette's probability of the diffuse event (its pd), the BSDF strategy's
+            // share of the direct light here.
+            const S pd = material.has_diffuse() ? average(material.scattering(f.cos_i, f.entering).diffuse) : S(0);
+            if (material.has_diffuse())
+                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction, material, pd, ctx);
             const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, ctx.rng);
             if (s.event == ScatterEvent::absorbed) break;
             throughput *= s.weight;
-            if (s.event == ScatterEvent::diffuse) after_diffuse = true;
-            specular_chain = s.event != ScatterEvent::diffuse;
+            if (s.event == ScatterEvent::diffuse)
+                arrival = {Arrival::diffuse, x, pd * glm::dot(f.normal, s.direction) * inv_pi<S>};
+            else if (arrival.kind != Arrival::unseen)
+                arrival.kind = Arrival::specular;
             const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
-            ray = Ray<S>{offset_origin(surface->hit.point, side, error), s.direction};
+            ray = Ray<S>{offset_origin(x, side, error), s.direction};
             if (s.event == ScatterEvent::diffuse) ++ctx.rays.gather; else if (s.event == ScatterEvent::transmission) ++ctx.rays.refraction; else ++ctx.rays.reflection;
         }
         return result;
     }
 
 private:
-    /// Radiance of the nearest sphere light the ray meets before distance t_hit (its emitted
-    /// radiance, if the direction leaving the light is within its cone).
-    [[nodiscard]] Rgb<S> light_radiance(const Ray<S>& ray, S t_hit) const {
-        Rgb<S> found(S(0));
-        S nearest = t_hit;
+    /// How the current ray was made, which decides what light it may collect.
+    struct Arrival {
+        enum Kind {
+            unseen,    ///< from the camera through mirrors and glass only: lights are invisible
+            diffuse,   ///< straight out of a diffuse vertex: weighted against its light sample
+            specular,  ///< mirrors or glass after a diffuse vertex: a caustic path, weight 1
+        } kind = unseen;
+        Vec3<S> from{};    ///< the diffuse vertex (diffuse only)
+        S bsdf_pdf = S(0);  ///< density of the ray's direction: pd cos(theta) / pi (diffuse only)
+    };
+
+    /// One light sample per light at a diffuse vertex x (shadow rays from `shadow_origin`),
+    /// reflected towards wo. The Lambertian part is weighted against the BSDF strategy, whose
+    /// density is pd cos / pi; the Phong highlight has weight 1, as no path samples it (it is
+    /// direct light only, as in pm's direct_lighting, which this matches).
+    [[nodiscard]] Rgb<S> sample_lights(const Vec3<S>& x, const Vec3<S>& shadow_origin, const Vec3<S>& n,
+                                       const Vec3<S>& wo, const Material<S>& material, S pd, ShadingContext& ctx) const {
+        Rgb<S> total(S(0));
+        const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
         for (const Light<S>& light : scene_.lights()) {
-            const S r = light_radius(light);
-            if (r == S(0)) continue;
-            const Vec3<S> oc = ray.origin - light_center(light);
-            const S b = glm::dot(oc, ray.direction);
-            const Vec3<S> closest = oc - b * ray.direction;
-            const S disc = r * r - glm::dot(closest, closest);
-            if (disc < S(0)) continue;
-            const S t = -b - std::sqrt(disc);
-            if (!(t > S(0)) || !(t < nearest)) continue;
-            const auto& cone = light_cone(light);
-            if (cone && !cone->contains(-ray.direction)) continue;
-            nearest = t;
-            found = radiant_intensity(light) / (pi<S> * r * r);
+            const auto sample = sample_light(light, x, ctx.rng.uniform2<S>());
+            if (!sample) continue;
+            const S cos_theta = glm::dot(n, sample->direction);
+            if (!(cos_theta > S(0))) continue;
+            ++ctx.rays.shadow;
+            if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;
+            const S weight = sample->delta || !mis_ ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
+            const Rgb<S> f = brdf * (cos_theta * weight) + Rgb<S>(phong_highlight(material, n, wo, sample->direction));
+            total += f * sample->radiance / sample->pdf;
+        }
+        return total;
+    }
+
+    /// Emission of the sphere lights `ray` meets before its surface hit (lights are not objects:
+    /// all of them on the ray count, as they would for shadow rays), weighted for `arrival`.
+    [[nodiscard]] Rgb<S> lights_met(const Ray<S>& ray, const std::optional<SurfaceHit<S>>& surface,
+                                    const Arrival& arrival, ShadingContext& ctx) const {
+        if (arrival.kind == Arrival::diffuse && !mis_) return Rgb<S>(S(0));  // light sampling alone covers it
+        const S t_hit = surface ? surface->hit.t : std::numeric_limits<S>::infinity();
+        Rgb<S> found(S(0));
+        for (const Light<S>& light : scene_.lights()) {
+            const auto hit = intersect_light(light, ray);
+            if (!hit || is_black(hit->radiance)) continue;
+            if (arrival.kind == Arrival::specular) {
+                if (hit->t < t_hit) found += hit->radiance;
+                continue;
+            }
+            // Seen as the vertex's shadow ray would see it: through objects without shadows too.
+            if (!(hit->t < t_hit)) {
+                if (scene_.objects()[surface->object].options.casts_shadow) continue;
+                ++ctx.rays.shadow;
+                if (scene_.occluded(Ray<S>{ray.origin, ray.direction, hit->t})) continue;
+            }
+            found += hit->radiance * power_heuristic(arrival.bsdf_pdf, light_pdf(light, arrival.from, ray.direction));
         }
         return found;
     }
 
     const SceneT& scene_;
-    const RenderSettings& settings_;
+    bool mis_;
 };
 
 }  // namespace photon

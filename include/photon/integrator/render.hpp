@@ -159,16 +159,16 @@ template <class SceneT>
             for (unsigned x = 0; x < settings.width; ++x) {
                 const std::uint64_t pixel = std::uint64_t(y) * settings.width + x;
                 ctx.rng = Pcg32(settings.seed ^ 0x706978656c73ULL, pixel);
-                Rgb<S> sum(S(0));
+                Rgb<double> sum(0.0);  // thousands of samples of a reference would drift in float
                 for (unsigned s = 0; s < spp; ++s) {
                     const Vec2<S> jitter = spp == 1 ? Vec2<S>(S(0.5)) : stratified(s, grid, ctx.rng.uniform2<S>());
                     const S u = (S(x) + jitter.x) / S(settings.width);
                     const S v = (S(y) + jitter.y) / S(settings.height);
                     ++ctx.rays.camera;
-                    sum += reference ? path_tracer.radiance(camera.ray(u, v), ctx)
-                                     : integrator.radiance(camera.ray(u, v), 1, ctx);
+                    sum += Rgb<double>(reference ? path_tracer.radiance(camera.ray(u, v), ctx)
+                                                 : integrator.radiance(camera.ray(u, v), 1, ctx));
                 }
-                film.at(x, unsigned(y)) = Rgb<float>(sum / S(spp));
+                film.at(x, unsigned(y)) = Rgb<float>(sum / double(spp));
             }
             if (settings.progress) {
                 const std::lock_guard lock(merge);
@@ -202,6 +202,8 @@ template <class SceneT>
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
+    if (settings.mode == RenderMode::reference)
+        if (std::string blind = reference_blind_spot(scene); !blind.empty()) stats.warnings.push_back(std::move(blind));
     PhotonMaps maps = build_photon_maps(scene, settings, stats);
     if (settings.cancel && settings.cancel->load()) {
         result.film = Film(settings.width, settings.height);  // nothing rendered yet

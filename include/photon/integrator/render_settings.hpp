@@ -70,6 +70,9 @@ struct RenderSettings {
     /// Final gathering reads irradiance precomputed at every `irradiance_stride`-th global photon
     /// (Christensen 1999) instead of running a density estimate per gather ray; 0 turns it off.
     unsigned irradiance_stride = 4;
+    /// reference: weigh light sampling against BSDF sampling for sphere lights (multiple
+    /// importance sampling); false counts direct light by shadow rays alone (to measure the gain).
+    bool reference_mis = true;
 
     /// sppm: passes of one camera ray per pixel and `sppm_photons_per_pass` photons each.
     unsigned sppm_passes = 64;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace photon {
 
@@ -48,6 +49,9 @@ struct RenderStats {
     std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
     double precompute_seconds = 0, cache_seconds = 0, render_seconds = 0, total_seconds = 0;
     bool partial = false;  ///< cancelled before every pixel was rendered
+    /// What the user should know about this render's result (e.g. light the mode cannot see),
+    /// one sentence each; the CLI prints them as "photon: warning: ...".
+    std::vector<std::string> warnings;
 };
 
 /// The statistics as an aligned plain-text table.

@@ -114,11 +114,28 @@ public:
         cos_max_ = std::sqrt(std::max(S(0), S(1) - sin2_max));
         const S one_minus_cos = sin2_max / (S(1) + cos_max_);
         frame_ = Frame<S>::from_normal(axis_);
-        value_ = intensity / (pi<S> * radius_ * radius_) * (S(2) * pi<S> * one_minus_cos);
+        solid_angle_ = S(2) * pi<S> * one_minus_cos;
+        value_ = intensity / (pi<S> * radius_ * radius_) * solid_angle_;
     }
 
     /// Whether more than one sample can differ (an area light).
     [[nodiscard]] bool is_area() const noexcept { return radius_ > S(0); }
+
+    /// Density per steradian of sample()'s directions at unit `direction`: 1 / the solid angle
+    /// the sphere subtends if the line along `direction` meets the sphere, else 0 (also for a
+    /// point light, whose one direction is a delta). Whether the line meets the sphere is
+    /// decided by the centre's distance from it, not by comparing cosines, which round to 1 in
+    /// float for small far lights. Multiple importance sampling needs it for directions that
+    /// another strategy found.
+    [[nodiscard]] S pdf(const Vec3<S>& direction) const noexcept {
+        if (!visible_ || radius_ == S(0)) return S(0);
+        const S b = glm::dot(direction, to_center_);
+        if (!(b > S(0))) return S(0);
+        const Vec3<S> off = to_center_ - b * direction;
+        return glm::dot(off, off) <= radius_ * radius_ ? S(1) / solid_angle_ : S(0);
+    }
+    /// pdf() of the directions sample() returns (they all meet the sphere): 1 / solid angle.
+    [[nodiscard]] S sample_pdf() const noexcept { return radius_ > S(0) && visible_ ? S(1) / solid_angle_ : S(0); }
 
     /// One sample, with u uniform in [0,1)^2 (stratify it for soft shadows). Nothing when `x`
     /// is outside the cone or inside the light.
@@ -139,7 +156,7 @@ public:
 private:
     const std::optional<Cone<S>>& cone_;
     Vec3<S> to_center_{}, axis_{};
-    S radius_ = S(0), distance_ = S(0), cos_max_ = S(1);
+    S radius_ = S(0), distance_ = S(0), cos_max_ = S(1), solid_angle_ = S(0);
     Frame<S> frame_{};
     Rgb<S> value_{};
     bool visible_ = false;

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// One light sample with its density, the density of any direction, and the light a ray meets:
+// what an integrator needs to weigh light sampling against BSDF sampling (multiple importance
+// sampling, Veach 1997; integrator/path_tracer.hpp). Sphere lights are sampled as by
+// IncidentSampler, uniformly in the solid angle they subtend.
+
+#include <cmath>
+#include <optional>
+
+#include "light.hpp"
+
+namespace photon {
+
+/// Radiance leaving the surface of a sphere light (in the directions its cone lets out).
+template <Scalar S> [[nodiscard]] Rgb<S> surface_radiance(const Light<S>& light) noexcept {
+    const S r = light_radius(light);
+    return r > S(0) ? radiant_intensity(light) / (pi<S> * r * r) : Rgb<S>(S(0));
+}
+
+/// One sample of a light seen from a shading point.
+template <Scalar S> struct LightSample {
+    Vec3<S> direction;  ///< unit, from the shading point towards the light
+    S distance;         ///< to the sampled point of the light (a shadow ray stops short of it)
+    /// Sphere light: the radiance arriving along `direction`. Point light (`delta`): the
+    /// irradiance I / d^2 on a surface facing it, as the delta distribution integrates to.
+    Rgb<S> radiance;
+    S pdf;       ///< per steradian; 1 for a point light
+    bool delta;  ///< a point light: no other strategy can find its direction
+};
+
+/// One sample of `light` from `x` with u uniform in [0,1)^2; nothing when `x` is outside the
+/// light's cone or inside the light. Estimate: f * radiance * cos(theta) / pdf.
+template <Scalar S>
+[[nodiscard]] std::optional<LightSample<S>> sample_light(const Light<S>& light, const Vec3<S>& x, Vec2<S> u) noexcept {
+    const IncidentSampler<S> sampler(light, x);
+    const auto incident = sampler.sample(u);
+    if (!incident) return std::nullopt;
+    if (!sampler.is_area()) return LightSample<S>{incident->direction, incident->distance, incident->irradiance, S(1), true};
+    return LightSample<S>{incident->direction, incident->distance, surface_radiance(light), sampler.sample_pdf(), false};
+}
+
+/// Density per steradian with which sample_light(light, x, .) draws unit `direction` (0 for a
+/// point light and for directions that miss the sphere).
+template <Scalar S>
+[[nodiscard]] S light_pdf(const Light<S>& light, const Vec3<S>& x, const Vec3<S>& direction) noexcept {
+    return IncidentSampler<S>(light, x).pdf(direction);
+}
+
+/// Where a ray meets a sphere light's surface from outside, and what it sees there.
+template <Scalar S> struct LightHit {
+    S t;              ///< ray parameter of the near intersection, > 0
+    Rgb<S> radiance;  ///< emitted back along the ray: 0 if that direction is outside the light's cone
+};
+
+/// The near intersection of `ray` (unit direction) with a sphere light; nothing for a point
+/// light, a miss, or a ray starting inside the light.
+template <Scalar S> [[nodiscard]] std::optional<LightHit<S>> intersect_light(const Light<S>& light, const Ray<S>& ray) noexcept {
+    const S r = light_radius(light);
+    if (r == S(0)) return std::nullopt;
+    const Vec3<S> oc = ray.origin - light_center(light);
+    const S b = glm::dot(oc, ray.direction);
+    const Vec3<S> closest = oc - b * ray.direction;
+    const S disc = r * r - glm::dot(closest, closest);
+    if (disc < S(0)) return std::nullopt;
+    const S t = -b - std::sqrt(disc);
+    if (!(t > S(0))) return std::nullopt;
+    const auto& cone = light_cone(light);
+    if (cone && !cone->contains(-ray.direction)) return LightHit<S>{t, Rgb<S>(S(0))};
+    return LightHit<S>{t, surface_radiance(light)};
+}
+
+}  // namespace photon
