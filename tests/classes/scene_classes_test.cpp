@@ -13,7 +13,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "class_harness.hpp"
+#include "scene_class_judge.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -25,24 +25,15 @@ using namespace classes;
 
 namespace {
 
-// Judge samples per class, chosen so that the judge's block noise at 48 x 36 (rms over the blocks)
-// stays below max_judge_noise. The path tracer finds light that comes by way of a mirror or glass
-// (L S+ D E) only by hitting the light after the diffuse bounce, so those classes need many more.
-constexpr SceneClass scene_classes[] = {
-    // name, direct only, point-light caustics, path tracer samples, sppm passes
-    {"diffuse-ball", false, false, 512, 256},
-    {"mirror-plane", false, false, 16384, 256},
-    {"glass-slab", false, false, 6144, 256},
-    {"point-caustic", false, true, 1024, 256},
-    {"cone-light", true, false, 256, 256},
-    {"nested-glass", false, false, 2048, 256},
-    {"mirror-corridor", false, false, 14336, 256},
-    {"window-room", false, false, 1536, 512},
-    {"scale-km", false, false, 512, 256},
-    {"scale-mm", false, false, 512, 256},
-    {"many-lights", true, false, 16, 16},
-    {"mesh", false, false, 512, 256},
-};
+Measurement measurement() {
+    Measurement m;
+    m.classes_dir = PHOTON_CLASSES_DIR;
+    return m;
+}
+
+std::filesystem::path class_path(const std::string& name) {
+    return std::filesystem::path(PHOTON_CLASSES_DIR) / (name + ".pov");
+}
 
 /// The judge every class is measured against: sppm, or the path tracer when the environment
 /// variable PHOTON_CLASSES_JUDGE is `reference`.
@@ -115,8 +106,7 @@ void check_verdict(const std::string& scene, const Verdict& v) {
     }
 }
 
-/// The table row of one class, printed to standard output (ctest -V shows it) and appended to
-/// scene-classes.tsv in the working directory.
+/// The table row of one class, printed to standard output (ctest -V shows it).
 void report(const SceneClass& c, const Judgement& j, const std::vector<Verdict>& verdicts) {
     std::ostringstream row;
     char text[128];
@@ -126,10 +116,6 @@ void report(const SceneClass& c, const Judgement& j, const std::vector<Verdict>&
     for (const auto& v : verdicts) row << " | " << v.mode << " " << describe(v, 4) << (v.passes() ? "" : " FAIL");
     row << " |";
     std::cout << row.str() << std::endl;
-    std::ofstream tsv("scene-classes.tsv", std::ios::app);
-    tsv << c.name << '\t' << to_string(judge.mode) << '\t' << j.noise.rms << '\t' << j.noise.max << '\t' << j.seconds;
-    for (const auto& v : verdicts) tsv << '\t' << v.mode << '\t' << v.worst.bias << '\t' << v.seconds;
-    tsv << '\n';
 }
 
 void judge_scene_class(const SceneClass& c) {
@@ -138,7 +124,7 @@ void judge_scene_class(const SceneClass& c) {
                     << ") cannot see light from a point light through glass or mirrors");
         return;
     }
-    const Measurement m;
+    const Measurement m = measurement();
     const Judgement j = judge_class(c, judge, m);
     {
         INFO(c.name << ": the judge's block noise is " << 100.0 * j.noise.rms << "% rms (" << 100.0 * j.noise.max
@@ -158,7 +144,7 @@ void judge_scene_class(const SceneClass& c) {
 }
 
 const SceneClass& scene_class(const std::string& name) {
-    for (const auto& c : scene_classes)
+    for (const auto& c : gallery)
         if (name == c.name) return c;
     throw std::invalid_argument("no scene class " + name);
 }
@@ -166,7 +152,7 @@ const SceneClass& scene_class(const std::string& name) {
 }  // namespace
 
 TEST_CASE("every scene class parses and builds without warnings and names its light paths", "[classes]") {
-    for (const auto& c : scene_classes) {
+    for (const auto& c : gallery) {
         INFO(c.name);
         std::vector<dsl::Diagnostic> warnings;
         dsl::ParseOptions po;
@@ -201,7 +187,7 @@ TEST_CASE("scene class many-lights against the judge", "[classes][gallery]") { j
 TEST_CASE("scene class mesh against the judge", "[classes][gallery]") { judge_scene_class(scene_class("mesh")); }
 
 TEST_CASE("scale-km and scale-mm, the same scene 10^6 times apart, render alike", "[classes][gallery]") {
-    const Measurement m;
+    const Measurement m = measurement();
     for (const RenderMode mode : {RenderMode::rt, RenderMode::pm}) {
         const Render km = render_class("scale-km", mode, m), mm = render_class("scale-mm", mode, m);
         const auto lit = regions::lit_regions(km.blocks, std::vector<double>(km.blocks.size(), 1.0), m.min_light_fraction);

@@ -3,14 +3,18 @@
 // The measuring instrument of the scene-class gallery (examples/scenes/classes/*.pov): renders a
 // class with photon's modes and with a judge (a consistent renderer that sees the class's light
 // paths), splits the images into a grid of blocks and reports each mode's worst block bias against
-// the judge, with the judge's own noise measured from two runs of different seeds.
+// the judge, with the judge's own noise measured from two runs of different seeds. Used by the
+// gallery test (tests/classes, small images) and photon-classes (tools/render_classes.cpp, the
+// pictures of docs/scene-classes.md).
 
 #include <photon/dsl/dsl.hpp>
 #include <photon/integrator/render.hpp>
 
 #include "region_statistics.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -19,11 +23,6 @@
 namespace classes {
 
 using namespace photon;
-
-/// Where the gallery's scene files are (set by tests/classes/CMakeLists.txt).
-inline std::filesystem::path class_path(const std::string& name) {
-    return std::filesystem::path(PHOTON_CLASSES_DIR) / (name + ".pov");
-}
 
 /// A class of the gallery and what it needs to be judged.
 struct SceneClass {
@@ -34,6 +33,32 @@ struct SceneClass {
     unsigned sppm_passes;       ///< sppm: passes of each run
 };
 
+/// The gallery. The judges' efforts are for 48 x 36 and 4 x 4 blocks (the test): enough to keep
+/// the judge's block noise under 0.75%. The path tracer finds light that comes by way of a mirror
+/// or glass (L S+ D E) only by hitting the light after the diffuse bounce, so those classes need
+/// many more of its samples.
+inline constexpr SceneClass gallery[] = {
+    // name, direct only, point-light caustics, path tracer samples, sppm passes
+    {"diffuse-ball", false, false, 512, 256},
+    {"mirror-plane", false, false, 16384, 256},
+    {"glass-slab", false, false, 6144, 256},
+    {"point-caustic", false, true, 1024, 256},
+    {"cone-light", true, false, 256, 256},
+    {"nested-glass", false, false, 2048, 256},
+    {"mirror-corridor", false, false, 14336, 256},
+    {"window-room", false, false, 1536, 512},
+    {"scale-km", false, false, 512, 256},
+    {"scale-mm", false, false, 512, 256},
+    {"many-lights", true, false, 16, 16},
+    {"mesh", false, false, 512, 256},
+};
+
+/// How hard the judge works beyond a class's own effort (photon-classes raises it for pictures).
+struct JudgeEffort {
+    double scale = 1.0;                           ///< times the class's samples or passes
+    std::size_t sppm_photons_per_pass = 20'000;   ///< the pass count, not the photons, shrinks the radii
+};
+
 /// A renderer that judges the others: its mode, how its effort is set, and which paths it sees.
 struct Judge {
     RenderMode mode;
@@ -41,30 +66,30 @@ struct Judge {
     /// or glass (L S+ D E with a point light). A path tracer cannot: it would have to hit a point.
     bool sees_point_light_caustics;
     /// Sets the judge's effort for a class (samples per pixel, or passes).
-    void (*configure)(RenderSettings&, const SceneClass&);
+    void (*configure)(RenderSettings&, const SceneClass&, const JudgeEffort&);
 };
 
-/// The path tracer (--mode reference): unbiased, but blind to point-light caustics.
-inline const Judge path_tracer_judge{RenderMode::reference, false, [](RenderSettings& s, const SceneClass& c) {
-                                         s.samples_per_pixel = c.reference_samples;
-                                     }};
+inline unsigned scaled(unsigned samples, double scale) { return std::max(1u, unsigned(std::lround(samples * scale))); }
 
-/// Photons per sppm pass at the test's small image: the pass count, not the photons, is what
-/// shrinks the radii, so many small passes converge faster than few big ones.
-inline constexpr std::size_t sppm_judge_photons_per_pass = 20'000;
+/// The path tracer (--mode reference): unbiased, but blind to point-light caustics.
+inline const Judge path_tracer_judge{RenderMode::reference, false,
+                                     [](RenderSettings& s, const SceneClass& c, const JudgeEffort& e) {
+                                         s.samples_per_pixel = scaled(c.reference_samples, e.scale);
+                                     }};
 
 /// Stochastic progressive photon mapping (--mode sppm): consistent, sees every path. Its
 /// photons follow up to 100 bounces (the files' max_photon_depth is pm's setting, not the
 /// scene's), and one shadow ray per light and pass (the passes average them).
-inline const Judge sppm_judge{RenderMode::sppm, true, [](RenderSettings& s, const SceneClass& c) {
-                                  s.sppm_passes = c.sppm_passes;
-                                  s.sppm_photons_per_pass = sppm_judge_photons_per_pass;
+inline const Judge sppm_judge{RenderMode::sppm, true, [](RenderSettings& s, const SceneClass& c, const JudgeEffort& e) {
+                                  s.sppm_passes = scaled(c.sppm_passes, e.scale);
+                                  s.sppm_photons_per_pass = e.sppm_photons_per_pass;
                                   s.max_photon_depth = 100;
                                   s.shadow_samples = 1;
                               }};
 
 /// The image size, grid and thresholds of the measurement.
 struct Measurement {
+    std::filesystem::path classes_dir;  ///< examples/scenes/classes
     unsigned width = 48, height = 36;  ///< small: the judge must converge within CI's time
     unsigned columns = 4, rows = 4;    ///< blocks of 12 x 9 pixels at 48 x 36
     double min_light_fraction = 0.01;  ///< blocks holding less of the judge's light are not judged
@@ -90,7 +115,7 @@ Render render_class(const std::string& name, RenderMode mode, const Measurement&
     o.width = m.width, o.height = m.height, o.mode = mode;
     dsl::BuildOptions bo;
     bo.overrides = o;
-    auto built = dsl::load_scene<float>(class_path(name), po, bo);
+    auto built = dsl::load_scene<float>(m.classes_dir / (name + ".pov"), po, bo);
     adjust(built.settings);
     const auto result = photon::render(built.scene, built.camera, built.settings);
     if (!result.film.all_finite_nonnegative()) throw std::runtime_error(name + ": the image holds NaN, Inf or negative values");
@@ -104,20 +129,25 @@ inline Render render_class(const std::string& name, RenderMode mode, const Measu
 
 /// The judge's two runs, their mean, and the blocks that count.
 struct Judgement {
+    Film film;                        ///< mean of the two runs
     std::vector<Rgb<double>> blocks;  ///< mean of the two runs
     std::vector<bool> lit;            ///< blocks holding more than the minimum share of its light
     regions::RelativeNoise noise;     ///< relative noise of `blocks`, from the runs' difference
     double seconds = 0.0;             ///< both runs
 };
 
-inline Judgement judge_class(const SceneClass& c, const Judge& judge, const Measurement& m) {
+inline Judgement judge_class(const SceneClass& c, const Judge& judge, const Measurement& m,
+                             const JudgeEffort& effort = {}) {
     Render runs[2];
     for (unsigned i = 0; i < 2; ++i)
         runs[i] = render_class(c.name, judge.mode, m, [&](RenderSettings& s) {
-            judge.configure(s, c);
+            judge.configure(s, c, effort);
             s.seed = 1 + i;
         });
     Judgement j;
+    j.film = runs[0].film;
+    for (std::size_t p = 0; p < j.film.pixels().size(); ++p)
+        j.film.pixels()[p] = (runs[0].film.pixels()[p] + runs[1].film.pixels()[p]) * 0.5f;
     for (std::size_t b = 0; b < runs[0].blocks.size(); ++b) j.blocks.push_back((runs[0].blocks[b] + runs[1].blocks[b]) * 0.5);
     const std::vector<double> sizes(j.blocks.size(), 1.0);  // equal blocks at the measurement's sizes
     j.lit = regions::lit_regions(j.blocks, sizes, m.min_light_fraction);
