@@ -8,12 +8,13 @@
 # scene-classes markers).
 #
 # Usage: scripts/scene-classes.sh [--size WxH] [--judge sppm|reference] [--effort F]
-#            [--photons-per-pass N] [--classes a,b] [--build DIR] [--doc FILE] [--images DIR]
+#            [--photons-per-pass N] [--classes a,b] [--reuse] [--build DIR] [--doc FILE] [--images DIR]
 #   --size     image size (default 320x240; the blocks are a 4 x 4 grid)
 #   --judge    sppm (default: sees every path) or reference (the path tracer, blind to
 #              point-light caustics)
 #   --effort   the judge's passes or samples, times those the test uses at 48x36 (default 2)
 #   --photons-per-pass  sppm photons per pass (default 100000)
+#   --reuse    keep the renders and numbers of the last run; only remake the pictures and the table
 # The renders stay in DIR/classes (DIR default build-classes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,7 +29,9 @@ build=build-classes
 doc=docs/scene-classes.md
 images=docs/images/classes
 usage() { sed -n '/^# Usage:/,/^# The renders/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
+reuse=0
 while [ $# -gt 0 ]; do
+  [ "$1" = --reuse ] && { reuse=1; shift; continue; }
   [ $# -ge 2 ] || usage
   case "$1" in
     --size) size=$2 ;;
@@ -53,17 +56,20 @@ mkdir -p "$work" "$images"
 
 classes_args=()
 [ -n "$only" ] && classes_args=(--classes "$only")
-start=$SECONDS
-"$root/$build/photon-classes" examples/scenes/classes "$work" --size "$size" --judge "$judge" --effort "$effort" \
-  --photons-per-pass "$photons" "${classes_args[@]}" | tee "$work/classes.tsv"
-elapsed=$((SECONDS - start))
+if [ $reuse = 0 ] || [ ! -s "$work/classes.tsv" ]; then
+  start=$SECONDS
+  "$root/$build/photon-classes" examples/scenes/classes "$work" --size "$size" --judge "$judge" --effort "$effort" \
+    --photons-per-pass "$photons" "${classes_args[@]}" | tee "$work/classes.tsv"
+  echo $((SECONDS - start)) >"$work/elapsed"
+fi
+elapsed=$(cat "$work/elapsed" 2>/dev/null || echo "?")
 
 # Exposure of each picture: the rooms are far brighter than the open scenes (numbers do not depend on it).
 exposure_of() {
   case "$1" in
-    window-room) echo 0.15 ;;
-    many-lights) echo 1.5 ;;
-    scale-km | scale-mm) echo 1.5 ;;
+    window-room) echo 0.4 ;;
+    mirror-plane) echo 1 ;;
+    many-lights | scale-km | scale-mm) echo 1.5 ;;
     *) echo 2 ;;
   esac
 }
