@@ -68,7 +68,7 @@ elapsed=$(cat "$work/elapsed" 2>/dev/null || echo "?")
 exposure_of() {
   case "$1" in
     window-room) echo 0.4 ;;
-    mirror-plane) echo 1 ;;
+    mirror-plane | mirror-corridor) echo 1 ;;
     many-lights | scale-km | scale-mm) echo 1.5 ;;
     *) echo 2 ;;
   esac
@@ -90,7 +90,9 @@ while IFS=$'\t' read -r name judge_mode noise_rms noise_max judge_s rest; do
     esac
   done
   noise=$(awk -v r="$noise_rms" -v m="$noise_max" 'BEGIN { printf "%.2f%% / %.2f%%", 100 * r, 100 * m }')
-  rows+=("| [$name](#$name) | $pm | $pmd | $rt | $noise | $(printf '%.0f' "$judge_s") s |")
+  anchor=$name
+  [[ $name == scale-* ]] && anchor=scale-km-and-scale-mm  # one section for the pair
+  rows+=("| [$name](#$anchor) | $pm | $pmd | $rt | $noise | $(printf '%.0f' "$judge_s") s |")
 done <"$work/classes.tsv"
 
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
