@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // photon: renders POV-Ray scene files by photon mapping.
 //
-//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct|reference ...]
+//   photon render scene.pov -o image.png [--width W --height H --mode rt|pm|pm-direct|reference|sppm ...]
 //   photon check scene.pov
 //   photon export-pov scene.pov -o flat.pov
 
@@ -119,6 +119,8 @@ struct RenderOptions {
     std::optional<unsigned> global_k, caustic_k;
     std::optional<float> global_radius, caustic_radius;
     std::optional<std::size_t> global_photons, caustic_photons;
+    std::optional<unsigned> sppm_passes;
+    std::optional<std::size_t> sppm_photons;
     std::optional<std::uint64_t> seed;
     std::string mode;
     float exposure = 1.0f;
@@ -145,7 +147,11 @@ std::string settings_line(const photon::RenderSettings& s) {
     std::ostringstream o;
     o << s.width << " x " << s.height << ", mode " << photon::to_string(s.mode) << ", " << s.samples_per_pixel
       << " samples per pixel, ray depth " << s.max_ray_depth << ", " << s.shadow_samples << " shadow samples";
-    if (s.mode != photon::RenderMode::rt)
+    if (s.mode == photon::RenderMode::sppm)
+        o << "; sppm: " << s.sppm_passes << " passes of " << s.sppm_photons_per_pass << " photons, initial radius "
+          << (s.sppm_initial_radius > 0 ? std::to_string(s.sppm_initial_radius) : std::string("auto"))
+          << ", photon depth " << s.max_photon_depth;
+    else if (s.mode != photon::RenderMode::rt)
         o << "; photons: " << s.global_photons << " global (k " << s.global_estimate.k << ", radius "
           << s.global_estimate.max_radius << "), " << s.caustic_photons << " caustic (k " << s.caustic_estimate.k
           << ", radius " << s.caustic_estimate.max_radius << "), photon depth " << s.max_photon_depth
@@ -265,6 +271,7 @@ photon::RenderMode parse_mode(const std::string& m) {
     if (m == "rt") return photon::RenderMode::rt;
     if (m == "pm") return photon::RenderMode::pm;
     if (m == "reference") return photon::RenderMode::reference;
+    if (m == "sppm") return photon::RenderMode::sppm;
     return photon::RenderMode::pm_direct;
 }
 
@@ -280,6 +287,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     o.samples_per_pixel = ro.spp, o.shadow_samples = ro.shadow_samples, o.final_gather_rays = ro.final_gather;
     o.irradiance_cache_error = ro.irradiance_cache;
     o.irradiance_stride = ro.irradiance_stride;
+    o.sppm_passes = ro.sppm_passes, o.sppm_photons_per_pass = ro.sppm_photons;
     o.max_ray_depth = ro.ray_depth, o.max_photon_depth = ro.photon_depth, o.threads = ro.threads, o.seed = ro.seed;
     o.global_k = ro.global_k, o.caustic_k = ro.caustic_k, o.global_radius = ro.global_radius,
     o.caustic_radius = ro.caustic_radius;
@@ -299,6 +307,14 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
 
     Progress progress(!so.quiet);
     settings.progress = [&](photon::RenderPhase phase, double f) { progress(phase, f); };
+    if (settings.mode == photon::RenderMode::sppm && !so.quiet) {
+        // One line per pass: a pass is the unit the image improves by (and can be stopped after).
+        const auto start = Clock::now();
+        settings.progress = [start, passes = settings.sppm_passes](photon::RenderPhase, double f) {
+            const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+            std::fprintf(stderr, "photon: sppm pass %u/%u (%.1f s)\n", unsigned(std::lround(f * passes)), passes, elapsed);
+        };
+    }
     settings.cancel = &cancel_requested;
     struct sigaction action {};
     action.sa_handler = on_interrupt;
@@ -415,8 +431,9 @@ int main(int argc, char** argv) {
                      "pm-direct: everything read from the photon maps; reference: path tracing, "
                      "slow and unbiased, to check the others against, except that it cannot see light "
                      "from point lights through mirrors or glass onto diffuse surfaces (renders it black) "
-                     "and finds sphere-light caustics by chance (noisy)")
-        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct", "reference"}));
+                     "and finds sphere-light caustics by chance (noisy); sppm: stochastic progressive photon "
+                     "mapping, consistent for every light path (caustics of point lights too), the judge")
+        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct", "reference", "sppm"}));
     render->add_option("--global-photons", ro.global_photons, "Photons emitted for the global map");
     render->add_option("--caustic-photons", ro.caustic_photons,
                        "Photons emitted towards mirrors and glass for the caustic map");
@@ -426,6 +443,10 @@ int main(int argc, char** argv) {
     render->add_option("--caustic-k", ro.caustic_k, "Photons per caustic estimate")->check(CLI::PositiveNumber);
     render->add_option("--caustic-radius", ro.caustic_radius, "Largest radius of a caustic estimate")
         ->check(CLI::PositiveNumber);
+    render->add_option("--passes", ro.sppm_passes, "sppm: passes (one camera ray per pixel and a photon set each)")
+        ->check(CLI::Range(1u, 1'000'000u));
+    render->add_option("--photons-per-pass", ro.sppm_photons, "sppm: photons emitted per pass")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 31));
     render->add_option("--spp", ro.spp, "Samples per pixel (anti-aliasing)")->check(CLI::PositiveNumber);
     render->add_option("--shadow-samples", ro.shadow_samples, "Shadow rays per area light and shading point")
         ->check(CLI::PositiveNumber);

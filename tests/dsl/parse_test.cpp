@@ -615,6 +615,29 @@ TEST_CASE("render settings: POV-Ray's keywords, photon's own, then overrides", "
     }
 }
 
+TEST_CASE("render_mode sppm and its passes: from the file, the command line, and exported", "[dsl][settings]") {
+    const std::string text = std::string(stage) +
+                             "sphere { 0, 1 finish { ambient 0 } }\n"
+                             "#ifdef (photon_version)\n"
+                             "global_settings { render_mode sppm sppm_passes 12 sppm_photons 3456 }\n"
+                             "#end\n";
+    std::vector<dsl::Diagnostic> w;
+    const auto b = built(text, &w);
+    CHECK(w.empty());
+    CHECK(b.settings.mode == RenderMode::sppm);
+    CHECK(b.settings.sppm_passes == 12);
+    CHECK(b.settings.sppm_photons_per_pass == 3456);
+    dsl::SettingsOverrides o;
+    o.sppm_passes = 5, o.sppm_photons_per_pass = 77;
+    const auto b2 = built(text, nullptr, o);
+    CHECK(b2.settings.sppm_passes == 5);
+    CHECK(b2.settings.sppm_photons_per_pass == 77);
+    const std::string exported = dsl::export_pov(dsl::parse_string(text, "test.pov"));
+    CHECK_THAT(exported, Contains("render_mode sppm") && Contains("sppm_passes 12") && Contains("sppm_photons 3456"));
+    CHECK_THROWS_WITH(built(std::string(stage) + "#ifdef (photon_version) global_settings { sppm_passes 0 } #end\n"),
+                      Contains("sppm_passes"));
+}
+
 TEST_CASE("POV-Ray's render-mode headers parse: radiosity is skipped, photons map to caustic settings",
           "[dsl][settings]") {
     for (const char* mode : {"rt", "rad", "rad_hq", "radphot", "radphot_hq"}) {

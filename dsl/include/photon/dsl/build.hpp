@@ -31,6 +31,8 @@ struct SettingsOverrides {
     std::optional<unsigned> samples_per_pixel, shadow_samples, final_gather_rays, max_ray_depth, max_photon_depth;
     std::optional<float> irradiance_cache_error;
     std::optional<unsigned> irradiance_stride;
+    std::optional<unsigned> sppm_passes;
+    std::optional<std::size_t> sppm_photons_per_pass;
     std::optional<unsigned> threads;
     std::optional<std::uint64_t> seed;
     std::optional<unsigned> global_k, caustic_k;
@@ -252,8 +254,10 @@ template <Scalar S>
     if (p.width) s.width = *p.width;
     if (p.height) s.height = *p.height;
     if (p.render_mode)
-        s.mode =
-            *p.render_mode == "rt" ? RenderMode::rt : (*p.render_mode == "pm" ? RenderMode::pm : RenderMode::pm_direct);
+        s.mode = *p.render_mode == "rt"     ? RenderMode::rt
+                 : *p.render_mode == "pm"   ? RenderMode::pm
+                 : *p.render_mode == "sppm" ? RenderMode::sppm
+                                            : RenderMode::pm_direct;
     if (p.global_photons) s.global_photons = std::size_t(*p.global_photons);
     if (p.caustic_photons) s.caustic_photons = std::size_t(*p.caustic_photons);
     for (auto [from, to] :
@@ -268,6 +272,8 @@ template <Scalar S>
     if (p.samples_per_pixel) s.samples_per_pixel = *p.samples_per_pixel;
     if (p.irradiance_stride) s.irradiance_stride = *p.irradiance_stride;
     if (p.irradiance_cache) s.irradiance_cache_error = float(*p.irradiance_cache);
+    if (p.sppm_passes) s.sppm_passes = *p.sppm_passes;
+    if (p.sppm_photons) s.sppm_photons_per_pass = std::size_t(*p.sppm_photons);
     if (p.seed) s.seed = *p.seed;
     if (p.shadow_samples) {
         s.shadow_samples = *p.shadow_samples;
@@ -293,6 +299,8 @@ template <Scalar S>
     if (o.final_gather_rays) s.final_gather_rays = *o.final_gather_rays;
     if (o.irradiance_cache_error) s.irradiance_cache_error = *o.irradiance_cache_error;
     if (o.irradiance_stride) s.irradiance_stride = *o.irradiance_stride;
+    if (o.sppm_passes) s.sppm_passes = *o.sppm_passes;
+    if (o.sppm_photons_per_pass) s.sppm_photons_per_pass = *o.sppm_photons_per_pass;
     if (o.max_ray_depth) s.max_ray_depth = *o.max_ray_depth;
     if (o.max_photon_depth) s.max_photon_depth = *o.max_photon_depth;
     if (o.threads) s.threads = *o.threads;

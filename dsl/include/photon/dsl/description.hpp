@@ -261,11 +261,13 @@ struct PovPhotons {
 /// `#ifdef (photon_version) ... #end` so that POV-Ray skips them.
 struct PhotonSettings {
     std::optional<unsigned> width, height;
-    std::optional<std::string> render_mode;  ///< rt, pm or pm_direct
+    std::optional<std::string> render_mode;  ///< rt, pm, pm_direct or sppm
     std::optional<std::uint64_t> global_photons, caustic_photons;
     EstimateDescription global_estimate, caustic_estimate;
     std::optional<unsigned> max_photon_depth, final_gather, shadow_samples, samples_per_pixel, irradiance_stride;
     std::optional<double> irradiance_cache;  ///< error bound of the final-gather cache, 0: off
+    std::optional<unsigned> sppm_passes;
+    std::optional<std::uint64_t> sppm_photons;  ///< per pass
     std::optional<std::uint64_t> seed;
 };
 

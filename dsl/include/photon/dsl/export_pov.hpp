@@ -81,6 +81,8 @@ private:
         if (p.samples_per_pixel) own << "  samples_per_pixel " << *p.samples_per_pixel << '\n';
         if (p.irradiance_stride) own << "  irradiance_stride " << *p.irradiance_stride << '\n';
         if (p.irradiance_cache) own << "  irradiance_cache " << *p.irradiance_cache << '\n';
+        if (p.sppm_passes) own << "  sppm_passes " << *p.sppm_passes << '\n';
+        if (p.sppm_photons) own << "  sppm_photons " << *p.sppm_photons << '\n';
         if (p.seed) own << "  seed " << *p.seed << '\n';
         if (!own.str().empty()) out_ << "#ifdef (photon_version)\nglobal_settings {\n" << own.str() << "}\n#end\n";
         out_ << '\n';

@@ -184,6 +184,8 @@ inline constexpr std::string_view photon_keywords[] = {"width",
                                                        "samples_per_pixel",
                                                        "irradiance_stride",
                                                        "irradiance_cache",
+                                                       "sppm_passes",
+                                                       "sppm_photons",
                                                        "seed"};
 inline constexpr std::string_view other_keywords[] = {"camera",
                                                       "global_settings",
@@ -2020,8 +2022,8 @@ private:
                 const Token m = next();
                 const std::string mode =
                     m.kind == TokenKind::string ? m.text : (m.kind == TokenKind::identifier ? m.text : "");
-                if (mode != "rt" && mode != "pm" && mode != "pm_direct" && mode != "pm-direct")
-                    fail_expected("`rt`, `pm` or `pm_direct` after `render_mode`", m);
+                if (mode != "rt" && mode != "pm" && mode != "pm_direct" && mode != "pm-direct" && mode != "sppm")
+                    fail_expected("`rt`, `pm`, `pm_direct` or `sppm` after `render_mode`", m);
                 p.render_mode = mode == "pm-direct" ? "pm_direct" : mode;
             } else if (w == "global_photons") {
                 p.global_photons = count("`global_photons`");
@@ -2044,6 +2046,10 @@ private:
                 const double a = parse_float("`irradiance_cache`", &at);
                 if (!(a >= 0 && a <= 1)) fail(at, "`irradiance_cache` error must be from 0 (off) to 1, found " + format_number(a));
                 p.irradiance_cache = a;
+            } else if (w == "sppm_passes") {
+                p.sppm_passes = positive("`sppm_passes`", 1e6);
+            } else if (w == "sppm_photons") {
+                p.sppm_photons = std::uint64_t(parse_integer("`sppm_photons`", 1, 2147483648.0));
             } else {  // seed
                 p.seed = count("`seed`");
             }
@@ -2055,7 +2061,7 @@ private:
             {"assumed_gamma", "ambient_light", "max_trace_level", "adc_bailout", "radiosity", "photons", "width",
              "height", "render_mode", "global_photons", "caustic_photons", "global_estimate", "caustic_estimate",
              "max_photon_depth", "final_gather", "shadow_samples", "samples_per_pixel", "irradiance_stride",
-             "irradiance_cache", "seed"});
+             "irradiance_cache", "sppm_passes", "sppm_photons", "seed"});
     }
 
     void parse_estimate(const Token& kw, EstimateDescription& e) {
