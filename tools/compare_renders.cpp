@@ -21,6 +21,8 @@
 
 #include <photon/dsl/dsl.hpp>
 
+#include "region_statistics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -120,7 +122,7 @@ std::vector<int> label_pixels(const dsl::BuiltScene<float>& built, const std::ve
     return eroded;
 }
 
-double channel_mean(const Rgb<double>& c) { return (c.x + c.y + c.z) / 3.0; }
+using photon::regions::channel_mean;
 
 struct Accumulator {
     Rgb<double> a{0.0}, b{0.0};
@@ -131,22 +133,6 @@ std::string fixed(double v, int digits) {
     std::ostringstream s;
     s << std::fixed << std::setprecision(digits) << v;
     return s.str();
-}
-
-/// RMSE over channels of the means of whole `n` x `n` blocks of A and B (same size).
-double block_rmse(const Film& a, const Film& b, unsigned n) {
-    double squared = 0.0;
-    std::size_t blocks = 0;
-    for (unsigned by = 0; by + n <= a.height(); by += n)
-        for (unsigned bx = 0; bx + n <= a.width(); bx += n) {
-            Rgb<double> d(0.0);
-            for (unsigned y = by; y < by + n; ++y)
-                for (unsigned x = bx; x < bx + n; ++x) d += Rgb<double>(a.at(x, y)) - Rgb<double>(b.at(x, y));
-            d /= double(n) * double(n);
-            squared += glm::dot(d, d);
-            ++blocks;
-        }
-    return std::sqrt(squared / (3.0 * double(blocks)));
 }
 
 std::string rgb_text(const Rgb<double>& c) {
@@ -267,16 +253,17 @@ int main(int argc, char** argv) {
         }
 
         // The region whose mean is furthest from B's, as A / B - 1 of the channel means.
-        double worst_bias = 0.0;
-        std::string worst_region = "-";
-        for (std::size_t r = 0; r < regions.size(); ++r) {
-            const auto& acc = per_region[r];
-            const double mb = channel_mean(acc.b);
-            if (acc.pixels == 0 || !(mb > 0.0)) continue;
-            const double bias = channel_mean(acc.a) / mb - 1.0;
-            if (worst_region == "-" || std::abs(bias) > std::abs(worst_bias)) worst_bias = bias, worst_region = regions[r].name;
+        std::vector<Rgb<double>> region_a, region_b;
+        std::vector<bool> seen;
+        for (const auto& acc : per_region) {
+            region_a.push_back(acc.pixels ? acc.a / double(acc.pixels) : Rgb<double>(0.0));
+            region_b.push_back(acc.pixels ? acc.b / double(acc.pixels) : Rgb<double>(0.0));
+            seen.push_back(acc.pixels > 0);
         }
-        const double rmse_blocks = block > 0 ? block_rmse(a, b, block) : 0.0;
+        const auto worst = photon::regions::worst_bias(region_a, region_b, seen);
+        const double worst_bias = worst.bias;
+        const std::string worst_region = worst.region < 0 ? "-" : regions[std::size_t(worst.region)].name;
+        const double rmse_blocks = block > 0 ? photon::regions::block_rmse(a, b, block) : 0.0;
 
         if (!summary_file.empty()) {
             std::ofstream out(summary_file);
