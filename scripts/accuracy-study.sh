@@ -184,13 +184,6 @@ table=$(
   echo
   echo "<!-- accuracy-study: end -->"
 )
-if [ -f "$doc" ] && grep -q '^<!-- accuracy-study: begin' "$doc"; then
-  awk -v block="$table" '
-    /^<!-- accuracy-study: begin/ { print block; skip = 1; next }
-    /^<!-- accuracy-study: end/ { skip = 0; next }
-    !skip { print }' "$doc" >"$doc.tmp"
-  mv "$doc.tmp" "$doc"
-else
-  printf '%s\n' "$table" >>"$doc"
-fi
+source "$root/scripts/doc-block.sh"
+replace_doc_block "$doc" accuracy-study "$table"
 echo "== wrote $doc and $images/; renders and logs in $work"

@@ -165,13 +165,6 @@ block=$(
   echo "$details"
   echo "<!-- compare-povray: end -->"
 )
-if [ -f "$doc" ] && grep -q '^<!-- compare-povray: begin' "$doc"; then
-  awk -v block="$block" '
-    /^<!-- compare-povray: begin/ { print block; skip = 1; next }
-    /^<!-- compare-povray: end/ { skip = 0; next }
-    !skip { print }' "$doc" >"$doc.tmp"
-  mv "$doc.tmp" "$doc"
-else
-  printf '%s\n' "$block" >>"$doc"
-fi
+source "$root/scripts/doc-block.sh"
+replace_doc_block "$doc" compare-povray "$block"
 echo "== wrote $doc and $images/*.jpg; renders and logs in $work"

@@ -112,13 +112,6 @@ table=$(
   echo
   echo "<!-- scene-classes: end -->"
 )
-if [ -f "$doc" ] && grep -q '^<!-- scene-classes: begin' "$doc"; then
-  awk -v block="$table" '
-    /^<!-- scene-classes: begin/ { print block; skip = 1; next }
-    /^<!-- scene-classes: end/ { skip = 0; next }
-    !skip { print }' "$doc" >"$doc.tmp"
-  mv "$doc.tmp" "$doc"
-else
-  printf '%s\n' "$table" >>"$doc"
-fi
+source "$root/scripts/doc-block.sh"
+replace_doc_block "$doc" scene-classes "$table"
 echo "== wrote $doc and $images/; renders in $work"
