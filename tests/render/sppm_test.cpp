@@ -13,23 +13,13 @@
 #include <cstring>
 #include <vector>
 
+#include "transport/furnace_sphere.hpp"
+
 using namespace photon;
 
 namespace {
 
-/// A closed diffuse sphere of radius R and albedo rho around a point light of power Phi, seen
-/// from inside (tests/transport/analytic_test.cpp): wall radiance rho Phi / (4 pi^2 R^2 (1 - rho)).
-struct FurnaceSphere {
-    static constexpr double R = 1.5, rho = 0.5, Phi = 20.0;
-    DefaultScene<double> scene;
-    PinholeCamera<double> camera = PinholeCamera<double>::look_at({0, 0.2, -0.3}, {0.3, 0.4, 1}, {0, 1, 0}, 70, 1.0);
-    FurnaceSphere() {
-        scene.add(Sphere<double>({0, 0, 0}, R), scene.add_material(Material<double>::lambertian(Rgb<double>(rho))));
-        scene.add_light(PointLight<double>{{0, 0, 0}, Rgb<double>(Phi)});
-        scene.commit();
-    }
-    static double radiance() { return rho * Phi / (4 * pi<double> * pi<double> * R * R * (1 - rho)); }
-};
+using photon::testing::FurnaceSphere;
 
 RenderSettings sppm_settings(unsigned width, unsigned height, unsigned passes, std::size_t photons) {
     RenderSettings s;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "transport/furnace_sphere.hpp"
+
 using namespace photon;
 
 TEST_CASE("photon map irradiance on a Lambertian plane under a point light is I cos(theta) / d^2", "[transport]") {
@@ -39,21 +41,7 @@ TEST_CASE("photon map irradiance on a Lambertian plane under a point light is I 
 
 namespace {
 
-/// A closed diffuse sphere of radius R and albedo rho, a point light of power Phi at its centre,
-/// and a camera inside looking at the wall. Its wall radiance is rho Phi / (4 pi^2 R^2 (1 - rho)):
-/// direct light rho Phi / (4 pi^2 R^2) times the geometric series of interreflections.
-struct FurnaceSphere {
-    static constexpr double R = 1.5, rho = 0.5, Phi = 20.0;
-    DefaultScene<double> scene;
-    PinholeCamera<double> camera = PinholeCamera<double>::look_at({0, 0.2, -0.3}, {0.3, 0.4, 1}, {0, 1, 0}, 70, 1.0);
-    FurnaceSphere() {
-        scene.add(Sphere<double>({0, 0, 0}, R), scene.add_material(Material<double>::lambertian(Rgb<double>(rho))));
-        scene.add_light(PointLight<double>{{0, 0, 0}, Rgb<double>(Phi)});
-        scene.commit();
-    }
-    static double radiance() { return rho * Phi / (4 * pi<double> * pi<double> * R * R * (1 - rho)); }
-    static double direct() { return rho * Phi / (4 * pi<double> * pi<double> * R * R); }
-};
+using photon::testing::FurnaceSphere;
 
 /// Mean of the red channel, and the fraction of pixels within `tolerance` of `expected`.
 std::pair<double, double> mean_and_within(const Film& film, double expected, double tolerance) {
