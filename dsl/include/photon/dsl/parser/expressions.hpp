@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Expressions: POV-Ray's operator grammar over floats, vectors and colours, with identifiers and
+// constants.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+inline Numeric Parser::parse_expression_for(const std::string& what) {
+    const std::string saved = expecting_;
+    expecting_ = what;
+    Numeric n = parse_expression();
+    expecting_ = saved;
+    return n;
+}
+
+inline Numeric Parser::parse_expression() {
+    const Nest nest(*this, peek().location);
+    Numeric c = parse_or();
+    if (peek().is_symbol("?")) {
+        const Token q = next();
+        const bool cond = to_float(c, "a condition before `?`", q.location) != 0.0;
+        Numeric a = parse_expression();
+        expect_symbol(":", "in `condition ? a : b`");
+        Numeric b = parse_expression();
+        return cond ? a : b;
+    }
+    return c;
+}
+
+inline Numeric Parser::parse_or() {
+    Numeric a = parse_and();
+    while (peek().is_symbol("|")) {
+        const Token op = next();
+        const Numeric b = parse_and();
+        a = Numeric::scalar(to_float(a, "a number", op.location) != 0.0 || to_float(b, "a number", op.location) != 0.0);
+    }
+    return a;
+}
+
+inline Numeric Parser::parse_and() {
+    Numeric a = parse_relation();
+    while (peek().is_symbol("&")) {
+        const Token op = next();
+        const Numeric b = parse_relation();
+        a = Numeric::scalar(to_float(a, "a number", op.location) != 0.0 && to_float(b, "a number", op.location) != 0.0);
+    }
+    return a;
+}
+
+inline Numeric Parser::parse_relation() {
+    Numeric a = parse_sum();
+    while (!in_vector_) {
+        const Token& t = peek();
+        if (!(t.kind == TokenKind::symbol && one_of(t.text, {"<", "<=", "=", "!=", ">=", ">"}))) break;
+        const Token op = next();
+        const Numeric b = parse_sum();
+        const double x = to_float(a, "a number to compare", op.location);
+        const double y = to_float(b, "a number to compare", op.location);
+        bool r = false;
+        if (op.text == "<")
+            r = x < y;
+        else if (op.text == "<=")
+            r = x <= y;
+        else if (op.text == "=")
+            r = x == y;
+        else if (op.text == "!=")
+            r = x != y;
+        else if (op.text == ">=")
+            r = x >= y;
+        else
+            r = x > y;
+        a = Numeric::scalar(r);
+    }
+    return a;
+}
+
+inline Numeric Parser::combine(const Numeric& a, const Numeric& b, const Token& op) {
+    Numeric r;
+    r.dim = std::max(a.dim, b.dim);
+    r.color = a.color || b.color;
+    const int n = r.dim == 0 ? 1 : r.dim;
+    for (int i = 0; i < n; ++i) {
+        const double x = a.at(i), y = b.at(i);
+        double v = 0;
+        switch (op.text[0]) {
+            case '+':
+                v = x + y;
+                break;
+            case '-':
+                v = x - y;
+                break;
+            case '*':
+                v = x * y;
+                break;
+            default:
+                if (y == 0.0) fail(op.location, "division by zero");
+                v = x / y;
+        }
+        r.c[std::size_t(i)] = v;
+    }
+    if (!r.finite()) fail(op.location, "the result of `" + op.text + "` is not a finite number");
+    return r;
+}
+
+inline Numeric Parser::parse_sum() {
+    Numeric a = parse_product();
+    while (peek().is_symbol("+") || peek().is_symbol("-")) {
+        const Token op = next();
+        a = combine(a, parse_product(), op);
+    }
+    return a;
+}
+
+inline Numeric Parser::parse_product() {
+    Numeric a = parse_unary();
+    while (peek().is_symbol("*") || peek().is_symbol("/")) {
+        const Token op = next();
+        a = combine(a, parse_unary(), op);
+    }
+    return a;
+}
+
+inline Numeric Parser::parse_unary() {
+    const Token& t = peek();
+    if (t.is_symbol("-") || t.is_symbol("+") || t.is_symbol("!")) {
+        const Token op = next();
+        const Nest nest(*this, op.location);
+        Numeric v = parse_unary();
+        if (op.text == "-")
+            for (double& c : v.c) c = -c;
+        else if (op.text == "!")
+            v = Numeric::scalar(to_float(v, "a number after `!`", op.location) == 0.0);
+        return v;
+    }
+    return parse_postfix();
+}
+
+inline Numeric Parser::parse_postfix() {
+    Numeric v = parse_primary();
+    while (peek().is_symbol(".")) {
+        const Token dot = next();
+        const Token m = next();
+        static const std::map<std::string, int, std::less<>> members = {
+            {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
+            {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
+        const auto it = m.kind == TokenKind::identifier ? members.find(m.text) : members.end();
+        if (it == members.end())
+            fail_expected("a component (x, y, z, t, red, green, blue, filter, transmit) after `.`", m);
+        if (v.dim == 0)
+            fail(dot.location, "expected a vector or colour before `." + m.text + "`, found " + describe(v));
+        if (it->second >= v.dim)
+            fail(m.location,
+                 "`." + m.text + "` is beyond the " + std::to_string(v.dim) + " components of " + describe(v));
+        v = Numeric::scalar(v.c[std::size_t(it->second)]);
+    }
+    return v;
+}
+
+inline Numeric Parser::parse_primary() {
+    const Token t = peek();
+    if (t.kind == TokenKind::number) {
+        next();
+        return Numeric::scalar(t.number);
+    }
+    if (t.is_symbol("(")) {
+        next();
+        const bool saved = in_vector_;
+        in_vector_ = false;
+        Numeric v = parse_expression();
+        in_vector_ = saved;
+        expect_symbol(")", "to close the `(` at " + position(t.location));
+        return v;
+    }
+    if (t.is_symbol("<")) {
+        next();
+        Numeric v;
+        const bool saved = in_vector_;
+        for (;;) {
+            in_vector_ = true;
+            const SourceLocation at = peek().location;
+            const Numeric c = parse_expression();
+            in_vector_ = saved;
+            if (!c.is_float()) fail(at, "expected a number as a component of the vector, found " + describe(c));
+            if (v.dim == 5) fail(at, "a vector has at most 5 components");
+            v.c[std::size_t(v.dim++)] = c.c[0];
+            if (accept_symbol(",")) continue;
+            if (peek().is_symbol(">")) break;
+            fail_expected("`,` or `>` in the vector opened at " + position(t.location), peek());
+        }
+        next();
+        if (v.dim < 2) fail(t.location, "a vector needs at least 2 components, found 1");
+        return v;
+    }
+    if (t.kind == TokenKind::identifier) return parse_identifier_value(t);
+    fail_expected(expecting_.empty() ? std::string("a number or vector") : expecting_, t);
+}
+
+inline Numeric Parser::parse_identifier_value(const Token& t) {
+    const std::string& w = t.text;
+    if (one_of(w, color_keywords)) return Numeric::from_color(parse_color(expecting_));
+    if (one_of(w, constants)) {
+        next();
+        if (w == "pi") return Numeric::scalar(3.14159265358979323846);
+        if (w == "tau") return Numeric::scalar(2 * 3.14159265358979323846);
+        if (w == "x") return Numeric::vector({1, 0, 0});
+        if (w == "y") return Numeric::vector({0, 1, 0});
+        if (w == "z") return Numeric::vector({0, 0, 1});
+        if (w == "t") {
+            Numeric n;
+            n.c = {0, 0, 0, 1, 0};
+            n.dim = 4;
+            return n;
+        }
+        if (w == "u" || w == "v") {
+            Numeric n;
+            n.c = {w == "u" ? 1.0 : 0.0, w == "v" ? 1.0 : 0.0, 0, 0, 0};
+            n.dim = 2;
+            return n;
+        }
+        if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
+        if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0);
+        if (w == "version") return Numeric::scalar(version_);
+        if (w == "clock") return Numeric::scalar(0);
+        if (w == "image_width") return Numeric::scalar(options_.image_width);
+        return Numeric::scalar(options_.image_height);
+    }
+    if (one_of(w, functions)) return parse_function(next());
+    if (const Value* v = lookup(w)) {
+        if (w == "photon_version") mentions_photon_version_ = true;
+        if (const auto* n = std::get_if<Numeric>(&v->data)) {
+            next();
+            return *n;
+        }
+        fail(t.location, "expected " + (expecting_.empty() ? std::string("a number or vector") : expecting_) +
+                             ", found `" + w + "` (" + type_name(v->data) + ", declared at " +
+                             position_in(v->at, t.location) + ")");
+    }
+    if (is_reserved(w) || one_of(w, photon_keywords) || one_of(w, light_keywords))
+        fail_expected(expecting_.empty() ? std::string("a number or vector") : expecting_, t);
+    std::string best;
+    std::size_t best_d = 3;
+    for (const auto& scope : scopes_)
+        for (const auto& [name, value] : scope) {
+            const std::size_t d = edit_distance(w, name);
+            if (d < best_d && d <= std::max<std::size_t>(1, w.size() / 3)) best_d = d, best = name;
+        }
+    fail(t.location, "undefined identifier `" + w + "`" + (best.empty() ? "" : " (did you mean `" + best + "`?)"));
+}
+
+}  // namespace photon::dsl::detail

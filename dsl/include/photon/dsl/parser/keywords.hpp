@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The scene language's keyword tables, and the "did you mean" hints drawn from them.
+
+#include <algorithm>
+#include <cstddef>
+#include <initializer_list>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace photon::dsl::detail {
+
+/// Edit distance, for "did you mean" hints.
+[[nodiscard]] inline std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+/// A list of words: a keyword table or a braced list written at the call.
+struct Words {
+    std::span<const std::string_view> list;
+    Words() = default;
+    Words(std::initializer_list<std::string_view> l) : list(l.begin(), l.size()) {}
+    template <std::size_t N>
+    Words(const std::string_view (&a)[N]) : list(a) {}
+    [[nodiscard]] auto begin() const noexcept { return list.begin(); }
+    [[nodiscard]] auto end() const noexcept { return list.end(); }
+    [[nodiscard]] std::size_t size() const noexcept { return list.size(); }
+};
+
+inline bool one_of(std::string_view w, Words list) { return std::find(list.begin(), list.end(), w) != list.end(); }
+
+/// " (did you mean `x`?)" for the closest candidate within a small distance, or "".
+[[nodiscard]] inline std::string suggest(std::string_view word, Words candidates) {
+    std::string_view best;
+    std::size_t best_d = std::max<std::size_t>(1, std::min<std::size_t>(2, word.size() / 3)) + 1;
+    for (std::string_view c : candidates) {
+        const std::size_t d = edit_distance(word, c);
+        if (d < best_d) best_d = d, best = c;
+    }
+    return best.empty() ? std::string() : " (did you mean `" + std::string(best) + "`?)";
+}
+
+inline constexpr std::string_view object_keywords[] = {"sphere", "box",   "plane", "triangle", "smooth_triangle",
+                                                       "mesh",   "union", "merge", "object",   "light_source"};
+inline constexpr std::string_view unsupported_objects[] = {
+    "cylinder",      "cone",           "torus",      "disc",         "polygon",    "prism",         "sor",
+    "lathe",         "superellipsoid", "blob",       "height_field", "isosurface", "julia_fractal", "parametric",
+    "quadric",       "cubic",          "quartic",    "poly",         "polynomial", "sphere_sweep",  "text",
+    "bicubic_patch", "mesh2",          "difference", "intersection", "ovus",       "lemon"};
+inline constexpr std::string_view statement_keywords[] = {
+    "camera",          "light_source", "global_settings", "background", "sphere", "box", "plane", "triangle",
+    "smooth_triangle", "mesh",         "union",           "merge",      "object"};
+inline constexpr std::string_view color_keywords[] = {"color", "colour", "rgb",  "rgbf",   "rgbt",    "rgbft",
+                                                      "red",   "green",  "blue", "filter", "transmit"};
+inline constexpr std::string_view constants[] = {"pi", "tau", "x",       "y",     "z",           "t",
+                                                 "u",  "v",   "true",    "yes",   "on",          "false",
+                                                 "no", "off", "version", "clock", "image_width", "image_height"};
+inline constexpr std::string_view functions[] = {
+    "abs", "acos",  "asin", "atan", "atan2", "ceil",   "cos",  "cosh",    "defined",    "degrees", "div",
+    "exp", "floor", "int",  "ln",   "log",   "max",    "min",  "mod",     "pow",        "radians", "select",
+    "sin", "sinh",  "sqrt", "tan",  "tanh",  "vcross", "vdot", "vlength", "vnormalize", "vrotate"};
+inline constexpr std::string_view modifier_keywords[] = {
+    "texture",      "pigment",           "finish",          "normal",   "interior",
+    "material",     "photons",           "translate",       "rotate",   "scale",
+    "matrix",       "transform",         "no_shadow",       "no_image", "no_reflection",
+    "no_radiosity", "double_illuminate", "inverse",         "hollow",   "sturm",
+    "bounded_by",   "clipped_by",        "interior_texture"};
+inline constexpr std::string_view finish_keywords[] = {
+    "ambient",    "diffuse",         "brilliance", "specular", "roughness", "phong", "phong_size",
+    "reflection", "conserve_energy", "emission",   "metallic", "irid",      "crand", "reflection_exponent",
+    "subsurface"};
+inline constexpr std::string_view light_keywords[] = {"spotlight",
+                                                      "point_at",
+                                                      "radius",
+                                                      "falloff",
+                                                      "tightness",
+                                                      "area_light",
+                                                      "adaptive",
+                                                      "jitter",
+                                                      "circular",
+                                                      "orient",
+                                                      "area_illumination",
+                                                      "fade_distance",
+                                                      "fade_power",
+                                                      "shadowless",
+                                                      "looks_like",
+                                                      "photons",
+                                                      "media_interaction",
+                                                      "media_attenuation",
+                                                      "parallel",
+                                                      "cylinder",
+                                                      "projected_through",
+                                                      "translate",
+                                                      "rotate",
+                                                      "scale",
+                                                      "matrix",
+                                                      "transform"};
+inline constexpr std::string_view camera_keywords[] = {
+    "perspective", "location", "look_at",     "up",           "right",      "direction",
+    "sky",         "angle",    "translate",   "rotate",       "scale",      "matrix",
+    "transform",   "aperture", "focal_point", "blur_samples", "confidence", "variance"};
+inline constexpr std::string_view global_keywords[] = {
+    "assumed_gamma",   "ambient_light", "max_trace_level", "adc_bailout",     "radiosity",
+    "photons",         "charset",       "number_of_waves", "noise_generator", "max_intersections",
+    "irid_wavelength", "hf_gray_16",    "mm_per_unit",     "subsurface"};
+/// photon's own global_settings items (POV-Ray does not know them).
+inline constexpr std::string_view photon_keywords[] = {"width",
+                                                       "height",
+                                                       "render_mode",
+                                                       "global_photons",
+                                                       "caustic_photons",
+                                                       "global_estimate",
+                                                       "caustic_estimate",
+                                                       "max_photon_depth",
+                                                       "final_gather",
+                                                       "shadow_samples",
+                                                       "samples_per_pixel",
+                                                       "irradiance_stride",
+                                                       "irradiance_cache",
+                                                       "sppm_passes",
+                                                       "sppm_photons",
+                                                       "seed"};
+inline constexpr std::string_view other_keywords[] = {"camera",
+                                                      "global_settings",
+                                                      "background",
+                                                      "pigment",
+                                                      "finish",
+                                                      "interior",
+                                                      "texture",
+                                                      "ior",
+                                                      "target",
+                                                      "collect",
+                                                      "pass_through",
+                                                      "refraction",
+                                                      "fresnel",
+                                                      "albedo",
+                                                      "count",
+                                                      "spacing",
+                                                      "gather",
+                                                      "autostop",
+                                                      "expand_thresholds",
+                                                      "inside_vector",
+                                                      "sky_sphere",
+                                                      "fog",
+                                                      "rainbow",
+                                                      "media",
+                                                      "orthographic",
+                                                      "fisheye"};
+
+}  // namespace photon::dsl::detail

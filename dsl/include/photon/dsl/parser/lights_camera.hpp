@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Light sources (point, spotlight, area_light, their photons block) and the camera.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+inline Object Parser::parse_light(const Token& kw) {
+    open_block(kw);
+    Object obj;
+    obj.at = kw.location;
+    LightSource light;
+    light.at = kw.location;
+    bool from_identifier = false;
+    if (peek().kind == TokenKind::identifier) {
+        if (const Value* v = lookup(peek().text)) {
+            if (const auto* o = std::get_if<Object>(&v->data); o && std::holds_alternative<LightSource>(o->shape)) {
+                next();
+                obj = *o;
+                light = std::get<LightSource>(o->shape);
+                from_identifier = true;
+            }
+        }
+    }
+    if (!from_identifier) {
+        light.position = parse_vector("the position of the light");
+        optional_comma();
+        light.written["color"] = peek().location;
+        light.color = parse_color("the colour of the light");
+    }
+    Spotlight spot = light.spotlight.value_or(Spotlight{});
+    bool is_spot = light.spotlight.has_value();
+    AreaLight area = light.area.value_or(AreaLight{});
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokenKind::identifier) break;
+        if (try_transform(obj.transform)) continue;
+        const std::string& w = t.text;
+        if (!one_of(w, light_keywords)) break;
+        next();
+        light.written[w] = t.location;
+        if (w == "spotlight") {
+            is_spot = true;
+            spot.at = t.location;
+        } else if (w == "point_at") {
+            spot.point_at = parse_vector("the point after `point_at`");
+        } else if (w == "radius" || w == "falloff") {
+            SourceLocation at;
+            const double a = parse_float("the angle in degrees after `" + w + "`", &at);
+            if (!(a >= 0 && a <= 180))
+                fail(at, "`" + w + "` must be an angle from 0 to 180 degrees, found " + format_number(a));
+            (w == "radius" ? spot.radius : spot.falloff) = a;
+        } else if (w == "tightness") {
+            spot.tightness = parse_nonnegative("`tightness`");
+        } else if (w == "area_light") {
+            area.at = t.location;
+            area.axis1 = parse_vector("the first axis of the area light");
+            optional_comma();
+            area.axis2 = parse_vector("the second axis of the area light");
+            optional_comma();
+            area.size1 = int(parse_integer("the number of lights along the first axis", 1, 1024));
+            optional_comma();
+            area.size2 = int(parse_integer("the number of lights along the second axis", 1, 1024));
+            light.area = area;
+        } else if (w == "adaptive") {
+            area.adaptive = int(parse_integer("`adaptive`", 0, 16));
+        } else if (w == "jitter") {
+            area.jitter = parse_optional_bool();
+        } else if (w == "circular") {
+            area.circular = parse_optional_bool();
+        } else if (w == "orient") {
+            area.orient = parse_optional_bool();
+        } else if (w == "area_illumination") {
+            parse_optional_bool();
+        } else if (w == "fade_distance") {
+            SourceLocation at;
+            light.fade_distance = parse_float("the distance after `fade_distance`", &at);
+            if (!(light.fade_distance >= 0))
+                fail(at, "`fade_distance` must be >= 0, found " + format_number(light.fade_distance));
+        } else if (w == "fade_power") {
+            SourceLocation at;
+            light.fade_power = parse_float("the exponent after `fade_power`", &at);
+            if (!(light.fade_power >= 0))
+                fail(at, "`fade_power` must be >= 0, found " + format_number(light.fade_power));
+        } else if (w == "shadowless") {
+            light.shadowless = true;
+        } else if (w == "looks_like") {
+            const Nest nest(*this, t.location);
+            open_block(t);
+            const Token ok = next();
+            if (ok.kind != TokenKind::identifier || !one_of(ok.text, object_keywords))
+                fail_expected("an object in `looks_like`", ok);
+            Object shape = parse_object(ok);
+            parse_modifiers(t, shape);
+            close_block(t, "object modifiers");
+            light.looks_like = true;
+        } else if (w == "media_interaction" || w == "media_attenuation") {
+            parse_optional_bool();
+        } else if (w == "photons") {
+            parse_light_photons(t, light);
+        } else if (w == "parallel" || w == "cylinder" || w == "projected_through") {
+            fail(t.location,
+                 "photon does not support `" + w + "` lights: use a point light, an area light or a spotlight");
+        }
+    }
+    if (is_spot) light.spotlight = spot;
+    if (light.area) {
+        light.area->adaptive = area.adaptive, light.area->jitter = area.jitter;
+        light.area->circular = area.circular, light.area->orient = area.orient;
+    } else if (light.written.count("circular") || light.written.count("orient") || light.written.count("adaptive") ||
+               light.written.count("jitter")) {
+        warn(kw.location, "`circular`, `orient`, `adaptive` and `jitter` have no effect without `area_light`");
+    }
+    if (!is_spot)
+        for (const char* k : {"point_at", "radius", "falloff", "tightness"})
+            if (light.written.count(k))
+                warn(light.written[k], std::string("`") + k + "` has no effect without `spotlight`");
+    obj.shape = light;
+    close_block(kw, "a light_source item (spotlight, area_light, fade_distance, fade_power, photons, translate, ...)",
+                light_keywords);
+    return obj;
+}
+
+inline void Parser::parse_light_photons(const Token& kw, LightSource& light) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    for (;;) {
+        const Token t = peek();
+        if (t.is_identifier("reflection")) {
+            next();
+            light.photon_reflection = parse_optional_bool();
+        } else if (t.is_identifier("refraction")) {
+            next();
+            light.photon_refraction = parse_optional_bool();
+        } else if (t.is_identifier("area_light")) {
+            next();
+            light.photon_area_light = parse_optional_bool();
+        } else {
+            break;
+        }
+    }
+    close_block(kw, "`reflection`, `refraction` or `area_light`", {"reflection", "refraction", "area_light"});
+}
+
+inline CameraDescription Parser::parse_camera(const Token& kw) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    CameraDescription cam;
+    take_identifier(cam, "a camera identifier or a camera item");
+    cam.at = kw.location;
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokenKind::identifier) break;
+        if (try_transform(cam.transform)) continue;
+        const std::string& w = t.text;
+        if (one_of(w, {"orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic", "spherical", "cylinder",
+                       "mesh_camera"}))
+            fail(t.location, "photon supports only the `perspective` camera, found `" + w + "`");
+        if (!one_of(w, camera_keywords)) break;
+        next();
+        cam.written[w] = t.location;
+        if (w == "perspective") continue;
+        if (w == "location")
+            cam.location = parse_vector("the camera location");
+        else if (w == "look_at")
+            cam.look_at = parse_vector("the point after `look_at`");
+        else if (w == "up")
+            cam.up = parse_vector("the vector after `up`");
+        else if (w == "right")
+            cam.right = parse_vector("the vector after `right`");
+        else if (w == "direction")
+            cam.direction = parse_vector("the vector after `direction`");
+        else if (w == "sky")
+            cam.sky = parse_vector("the vector after `sky`");
+        else if (w == "angle") {
+            SourceLocation at;
+            const double a = parse_float("the horizontal field of view in degrees after `angle`", &at);
+            if (!(a > 0 && a < 180))
+                fail(at, "camera `angle` must be between 0 and 180 degrees, found " + format_number(a));
+            cam.angle = a;
+        } else if (w == "focal_point") {
+            parse_vector("the focal point");
+            warn(t.location, "`focal_point` is ignored: photon's camera is a pinhole");
+        } else {
+            parse_float("`" + w + "`");
+            if (w == "aperture")
+                warn(t.location, "`aperture` is ignored: photon's camera is a pinhole (no depth of field)");
+        }
+    }
+    close_block(kw, "a camera item (location, look_at, up, right, direction, sky, angle, translate, rotate)",
+                camera_keywords);
+    return cam;
+}
+
+}  // namespace photon::dsl::detail

@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Materials: texture, pigment, finish (with reflection) and interior blocks, and declared ones.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+/// A declared `T` at the start of a block (`texture { T_Ident ...`), copied into `out`. Any
+/// other declared type is an error naming `what` was expected, except numbers and colours
+/// where `numbers_allowed`.
+template <class T>
+bool Parser::take_identifier(T& out, const std::string& what, bool numbers_allowed) {
+    const Token t = peek();
+    if (t.kind != TokenKind::identifier) return false;
+    const Value* v = lookup(t.text);
+    if (!v) return false;
+    if (const T* typed = std::get_if<T>(&v->data)) {
+        next();
+        out = *typed;
+        return true;
+    }
+    if (numbers_allowed && std::holds_alternative<Numeric>(v->data)) return false;
+    fail(t.location, "expected " + what + ", found `" + t.text + "` (" + type_name(v->data) + ", declared at " +
+                         position_in(v->at, t.location) + ")");
+}
+
+inline Pigment Parser::parse_pigment(const Token& kw, Pigment p) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    p.at = kw.location;
+    take_identifier(p, "a colour or a pigment identifier", true);
+    Transform ignored;
+    for (;;) {
+        const Token t = peek();
+        if (t.is_symbol("}")) break;
+        if (try_transform(ignored)) continue;
+        if (t.is_identifier("quick_color") || t.is_identifier("quick_colour")) {
+            next();
+            parse_color("the quick colour");
+            continue;
+        }
+        if (t.kind == TokenKind::identifier &&
+            one_of(t.text,
+                   {"color_map", "colour_map", "pigment_map", "image_map", "checker",    "hexagon",  "brick",
+                    "gradient",  "bozo",       "granite",     "marble",    "wood",       "agate",    "spotted",
+                    "leopard",   "onion",      "radial",      "ripples",   "waves",      "wrinkles", "bumps",
+                    "dents",     "crackle",    "average",     "object",    "uv_mapping", "function", "pattern"}))
+            fail(t.location, "photon supports only solid colours in `pigment`, found `" + t.text + "`");
+        if (starts_expression(t) || t.is_identifier("color") || t.is_identifier("colour")) {
+            p.color = parse_color("the colour of the pigment");
+            continue;
+        }
+        if (t.kind == TokenKind::identifier) {
+            if (const Value* v = lookup(t.text))
+                fail(t.location,
+                     "expected a colour or pigment in `pigment`, found `" + t.text + "` (" + type_name(v->data) + ")");
+        }
+        break;
+    }
+    close_block(kw, "a colour", {"color", "rgb", "rgbf", "rgbt", "rgbft"});
+    return p;
+}
+
+inline Finish Parser::parse_finish(const Token& kw, Finish f) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    f.at = kw.location;
+    take_identifier(f, "a finish identifier or a finish item");
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokenKind::identifier || !one_of(t.text, finish_keywords)) break;
+        next();
+        const std::string& w = t.text;
+        f.written[w] = t.location;
+        if (w == "ambient") {
+            f.ambient = to_color(parse_expression_for("the ambient colour")).rgb;
+        } else if (w == "diffuse") {
+            if (peek().is_identifier("albedo")) next();
+            f.diffuse = parse_nonnegative("`diffuse`");
+            if (accept_symbol(",")) {
+                f.diffuse_back = parse_nonnegative("the back-side `diffuse`");
+                f.written["diffuse_back"] = t.location;
+            }
+        } else if (w == "brilliance") {
+            f.brilliance = parse_float("`brilliance`");
+        } else if (w == "specular") {
+            if (peek().is_identifier("albedo")) next();
+            f.specular = parse_float("`specular`");
+        } else if (w == "roughness") {
+            f.roughness = parse_float("`roughness`");
+        } else if (w == "phong") {
+            if (peek().is_identifier("albedo")) next();
+            f.phong = parse_nonnegative("`phong`");
+        } else if (w == "phong_size") {
+            SourceLocation at;
+            f.phong_size = parse_float("`phong_size`", &at);
+            if (!(f.phong_size > 0)) fail(at, "`phong_size` must be positive, found " + format_number(f.phong_size));
+        } else if (w == "metallic") {
+            f.metallic = starts_expression(peek()) ? parse_float("`metallic`") : 1.0;
+        } else if (w == "reflection") {
+            f.reflection = parse_reflection(t);
+        } else if (w == "reflection_exponent") {
+            if (!f.reflection) f.reflection = Reflection{};
+            f.reflection->exponent = parse_float("`reflection_exponent`");
+        } else if (w == "conserve_energy") {
+            f.conserve_energy = parse_optional_bool();
+        } else if (w == "emission") {
+            f.emission = to_color(parse_expression_for("the emission colour")).rgb;
+        } else if (w == "irid") {
+            skip_block(t);
+        } else if (w == "crand") {
+            parse_float("`crand`");
+        } else {
+            fail(t.location, "`subsurface` is not supported by photon");
+        }
+    }
+    close_block(kw,
+                "a finish item (ambient, diffuse, brilliance, specular, phong, phong_size, reflection, "
+                "conserve_energy, emission)",
+                finish_keywords);
+    return f;
+}
+
+inline Reflection Parser::parse_reflection(const Token& kw) {
+    Reflection r;
+    r.at = kw.location;
+    auto reflectance = [&](const char* what) {
+        SourceLocation at;
+        at = peek().location;
+        const Vector3 v = to_color(parse_expression_for(what)).rgb;
+        if (v.x < 0 || v.y < 0 || v.z < 0)
+            fail(at, std::string(what) + " must be >= 0, found " + describe(Numeric::vector(v)));
+        return v;
+    };
+    if (!peek().is_symbol("{")) {
+        r.max = r.min = reflectance("the reflection colour");
+        return r;
+    }
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    r.max = r.min = reflectance("the reflection");
+    if (accept_symbol(",") || starts_expression(peek())) {
+        r.max = reflectance("the maximum reflection");
+        r.variable = true;
+    }
+    for (;;) {
+        const Token t = peek();
+        if (t.is_identifier("fresnel")) {
+            next();
+            r.fresnel = parse_optional_bool();
+        } else if (t.is_identifier("falloff")) {
+            next();
+            r.falloff = parse_float("`falloff`");
+        } else if (t.is_identifier("exponent")) {
+            next();
+            r.exponent = parse_float("`exponent`");
+        } else if (t.is_identifier("metallic")) {
+            next();
+            r.metallic = starts_expression(peek()) ? parse_float("`metallic`") : 1.0;
+        } else {
+            break;
+        }
+    }
+    close_block(kw, "`fresnel`, `falloff`, `exponent` or `metallic`", {"fresnel", "falloff", "exponent", "metallic"});
+    return r;
+}
+
+inline Interior Parser::parse_interior(const Token& kw, Interior in) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    in.at = kw.location;
+    take_identifier(in, "an interior identifier or `ior`");
+    for (;;) {
+        const Token t = peek();
+        if (t.is_identifier("ior")) {
+            next();
+            SourceLocation at;
+            in.ior = parse_float("the index of refraction after `ior`", &at);
+            if (!(in.ior > 0)) fail(at, "ior must be positive, found " + format_number(in.ior));
+            in.written["ior"] = t.location;
+        } else if (t.kind == TokenKind::identifier &&
+                   one_of(t.text, {"caustics", "dispersion", "dispersion_samples", "fade_distance", "fade_power"})) {
+            next();
+            const double v = parse_float("`" + t.text + "`");
+            if (v != 0 && !(t.text == "dispersion" && v == 1) && t.text != "dispersion_samples")
+                warn(t.location, "interior `" + t.text + "` is ignored: photon's glass is clear, with one ior");
+        } else if (t.is_identifier("fade_color") || t.is_identifier("fade_colour")) {
+            next();
+            parse_color("the fade colour");
+            warn(t.location, "interior `" + t.text + "` is ignored: photon's glass does not absorb");
+        } else if (t.is_identifier("media")) {
+            fail(t.location, "`media` is not supported by photon");
+        } else {
+            break;
+        }
+    }
+    close_block(kw, "`ior`", {"ior", "caustics", "dispersion", "fade_distance", "fade_power", "fade_color"});
+    return in;
+}
+
+inline Texture Parser::parse_texture(const Token& kw, Texture tex) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    tex.at = kw.location;
+    if (!take_identifier(tex, "a texture identifier, `pigment` or `finish`")) {
+        if (peek().kind == TokenKind::identifier &&
+            one_of(peek().text, {"material_map", "tiles", "checker", "gradient", "texture_map", "image_pattern"}))
+            fail(peek().location,
+                 "photon supports only plain textures (one pigment and one finish), found `" + peek().text + "`");
+    }
+    tex.at = kw.location;
+    Transform ignored;
+    for (;;) {
+        const Token t = peek();
+        if (t.is_identifier("pigment"))
+            tex.pigment = parse_pigment(next(), tex.pigment);
+        else if (t.is_identifier("finish"))
+            tex.finish = parse_finish(next(), tex.finish);
+        else if (t.is_identifier("normal")) {
+            next();
+            skip_block(t);
+            warn(t.location, "`normal` is ignored: photon does not perturb normals");
+        } else if (try_transform(ignored)) {
+            continue;
+        } else {
+            break;
+        }
+    }
+    close_block(kw, "`pigment`, `finish` or `normal`", {"pigment", "finish", "normal"});
+    return tex;
+}
+
+}  // namespace photon::dsl::detail

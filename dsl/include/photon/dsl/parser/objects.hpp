@@ -1,0 +1,289 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Objects: the shapes, union/merge, `object { }`, meshes and the object modifiers.
+
+#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ  // set by the CMake target photon::obj
+#include <photon/io/obj_mesh.hpp>
+#endif
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+inline void Parser::unsupported_object(const Token& t) {
+    if (t.text == "difference" || t.text == "intersection")
+        fail(t.location, "photon does not support the CSG operation `" + t.text + "`: only `union` and `merge`");
+    fail(t.location, "photon does not support the object `" + t.text +
+                         "`: use sphere, box, plane, triangle, mesh, union or object");
+}
+
+inline Texture& Parser::ensure_texture(Object& obj) {
+    if (!obj.texture) obj.texture = default_texture_;
+    return *obj.texture;
+}
+
+inline void Parser::add_primitives(Object& obj, std::size_t n, const SourceLocation& at) {
+    obj.primitives += n;
+    if (obj.primitives > options_.max_primitives)
+        fail(at,
+             "the scene is too large: more than " + std::to_string(options_.max_primitives) + " objects and triangles");
+}
+
+inline Object Parser::parse_object(const Token& kw) {
+    const Nest nest(*this, kw.location);
+    const std::string& w = kw.text;
+    if (w == "light_source") return parse_light(kw);
+    Object obj;
+    obj.at = kw.location;
+    open_block(kw);
+    if (w == "sphere") {
+        SphereShape s;
+        s.center = parse_vector("the centre of the sphere");
+        optional_comma();
+        SourceLocation at;
+        s.radius = parse_float("the radius of the sphere", &at);
+        if (!(s.radius > 0)) fail(at, "sphere radius must be positive, found " + format_number(s.radius));
+        obj.shape = s;
+    } else if (w == "box") {
+        BoxShape b;
+        b.corner1 = parse_vector("the first corner of the box");
+        optional_comma();
+        b.corner2 = parse_vector("the second corner of the box");
+        obj.shape = b;
+    } else if (w == "plane") {
+        PlaneShape p;
+        SourceLocation at;
+        p.normal = parse_vector("the normal of the plane", &at);
+        if (glm::length(p.normal) == 0.0) fail(at, "the normal of the plane must not be zero");
+        optional_comma();
+        p.distance = parse_float("the distance of the plane from the origin");
+        obj.shape = p;
+    } else if (w == "triangle" || w == "smooth_triangle") {
+        obj.shape = parse_triangle_corners(kw);
+    } else if (w == "mesh") {
+        auto tris = std::make_shared<std::vector<std::array<Vector3, 3>>>();
+        if (peek().is_identifier("obj")) read_obj_mesh(next(), *tris);
+        while (peek().is_identifier("triangle") || peek().is_identifier("smooth_triangle")) {
+            const Token tk = next();
+            const Nest inner(*this, tk.location);
+            open_block(tk);
+            tris->push_back(parse_triangle_corners(tk).vertices);
+            if (peek().is_identifier("texture"))
+                fail(peek().location, "per-triangle textures in a `mesh` are not supported: give the mesh one texture");
+            close_block(tk, "the triangle's corners");
+            if (tris->size() > options_.max_primitives)
+                fail(tk.location, "the scene is too large: more than " + std::to_string(options_.max_primitives) +
+                                      " objects and triangles");
+        }
+        if (tris->empty()) fail_expected("`triangle` or `obj \"file.obj\"` in `mesh`", peek());
+        obj.primitives = tris->size();
+        obj.shape = MeshShape{std::move(tris)};
+    } else if (w == "union" || w == "merge") {
+        UnionShape u;
+        u.merge = w == "merge";
+        if (u.merge) warn(kw.location, "`merge` is read as `union`: photon keeps the inner surfaces");
+        obj.primitives = 0;
+        for (;;) {
+            const Token& t = peek();
+            if (t.kind != TokenKind::identifier) break;
+            if (one_of(t.text, unsupported_objects)) unsupported_object(t);
+            if (!one_of(t.text, object_keywords)) break;
+            const Token ck = next();
+            u.children.push_back(std::make_shared<const Object>(parse_object(ck)));
+            add_primitives(obj, u.children.back()->primitives, ck.location);
+        }
+        if (u.children.empty()) fail_expected("an object in `" + w + "`", peek());
+        obj.shape = std::move(u);
+    } else {  // object
+        const Token t = peek();
+        if (t.kind == TokenKind::identifier && one_of(t.text, object_keywords) && t.text != "object") {
+            obj = parse_object(next());
+        } else if (t.kind == TokenKind::identifier && one_of(t.text, unsupported_objects)) {
+            unsupported_object(t);
+        } else {
+            const Value* v = t.kind == TokenKind::identifier ? lookup(t.text) : nullptr;
+            if (!v) {
+                if (t.kind == TokenKind::identifier && !is_reserved(t.text))
+                    fail(t.location, "undefined identifier `" + t.text + "`");
+                fail_expected("an object identifier in `object`", t);
+            }
+            if (!std::holds_alternative<Object>(v->data))
+                fail(t.location,
+                     "expected an object identifier in `object`, found `" + t.text + "` (" + type_name(v->data) + ")");
+            next();
+            obj = std::get<Object>(v->data);
+        }
+        if (std::holds_alternative<LightSource>(obj.shape)) {
+            while (try_transform(obj.transform)) {
+            }
+            close_block(kw, "a transformation", {"translate", "rotate", "scale", "matrix", "transform"});
+            return obj;
+        }
+    }
+    parse_modifiers(kw, obj);
+    close_block(kw,
+                "an object modifier (texture, pigment, finish, interior, photons, translate, rotate, scale, "
+                "matrix, no_shadow)",
+                modifier_keywords);
+    return obj;
+}
+
+/// `obj "file.obj"` in a mesh: the file's triangles, its path relative to the scene file
+/// that names it. Needs photon::obj (tinyobjloader); errors point at the file name.
+inline void Parser::read_obj_mesh(const Token& kw, std::vector<std::array<Vector3, 3>>& tris) {
+    const Token s = next();
+    if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `obj`", s);
+#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ
+    namespace fs = std::filesystem;
+    const fs::path name(s.text);
+    const fs::path path = name.is_absolute() ? name : files_.back().path.parent_path() / name;
+    std::error_code ec;
+    std::string display = path.lexically_normal().string();
+    if (const auto rel = fs::proximate(path, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
+        display = rel.lexically_normal().string();
+    if (!fs::is_regular_file(path, ec))
+        fail(s.location, "cannot find the mesh file \"" + s.text + "\" (looked for " + display + ")");
+    ObjTriangles<double> obj;
+    try {
+        obj = photon::detail::parse_obj_file<double>(path, display);
+    } catch (const ObjError& e) {
+        fail(s.location, std::string("cannot read the mesh: ") + e.what());
+    }
+    for (const std::string& w : obj.warnings) warn(s.location, display + ": " + w);
+    if (obj.triangles.empty()) fail(s.location, "the mesh file " + display + " has no faces");
+    if (obj.triangles.size() > options_.max_primitives)
+        fail(s.location,
+             "the scene is too large: more than " + std::to_string(options_.max_primitives) + " objects and triangles");
+    tris.reserve(obj.triangles.size());
+    for (const auto& t : obj.triangles) tris.push_back({obj.positions[t[0]], obj.positions[t[1]], obj.positions[t[2]]});
+    (void)kw;
+#else
+    (void)tris;
+    fail(kw.location, "this program was built without OBJ support: `mesh { obj \"" + s.text +
+                          "\" }` needs photon::obj (tinyobjloader)");
+#endif
+}
+
+inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {
+    TriangleShape t;
+    const bool smooth = kw.text == "smooth_triangle";
+    for (int i = 0; i < 3; ++i) {
+        if (i > 0) optional_comma();
+        t.vertices[std::size_t(i)] = parse_vector("corner " + std::to_string(i + 1) + " of the triangle");
+        if (smooth) {
+            optional_comma();
+            parse_vector("the normal at corner " + std::to_string(i + 1));
+        }
+    }
+    if (smooth) warn(kw.location, "`smooth_triangle` normals are ignored: photon shades triangles flat");
+    return t;
+}
+
+inline void Parser::parse_material(const Token& kw, Object& obj) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    for (;;) {
+        const Token t = peek();
+        if (t.is_identifier("texture"))
+            obj.texture = parse_texture(next(), default_texture_);
+        else if (t.is_identifier("interior"))
+            obj.interior = parse_interior(next(), obj.interior.value_or(Interior{}));
+        else
+            break;
+    }
+    close_block(kw, "`texture` or `interior`", {"texture", "interior"});
+}
+
+inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
+    bool had_texture = false;
+    for (;;) {
+        const Token t = peek();
+        if (t.kind != TokenKind::identifier) return;
+        if (try_transform(obj.transform)) continue;
+        const std::string& w = t.text;
+        if (w == "texture") {
+            if (had_texture) fail(t.location, "layered textures are not supported: expected one `texture` per object");
+            had_texture = true;
+            obj.texture = parse_texture(next(), default_texture_);
+        } else if (w == "pigment") {
+            Texture& tex = ensure_texture(obj);
+            tex.pigment = parse_pigment(next(), tex.pigment);
+            tex.at = t.location;
+        } else if (w == "finish") {
+            Texture& tex = ensure_texture(obj);
+            tex.finish = parse_finish(next(), tex.finish);
+            if (!tex.at.known()) tex.at = t.location;
+        } else if (w == "normal") {
+            next();
+            skip_block(t);
+            warn(t.location, "`normal` is ignored: photon does not perturb normals");
+        } else if (w == "interior") {
+            obj.interior = parse_interior(next(), obj.interior.value_or(Interior{}));
+        } else if (w == "material") {
+            parse_material(next(), obj);
+        } else if (w == "photons") {
+            obj.photons = parse_object_photons(next());
+        } else if (w == "no_shadow") {
+            next();
+            obj.no_shadow = true;
+        } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "inverse"})) {
+            next();
+            obj.ignored[w] = t.location;
+            warn(t.location, "`" + w + "` is ignored by photon");
+        } else if (one_of(w, {"hollow", "sturm"})) {
+            next();
+            parse_optional_bool();
+        } else if (w == "inside_vector" && std::holds_alternative<MeshShape>(obj.shape)) {
+            next();
+            parse_vector("the inside vector of the mesh");
+        } else if (w == "interior_texture") {
+            next();
+            parse_texture(t, default_texture_);
+            warn(t.location, "`interior_texture` is ignored: photon uses one texture for both sides");
+        } else if (w == "bounded_by" || w == "clipped_by") {
+            fail(t.location, "`" + w + "` is not supported by photon");
+        } else if (one_of(w, object_keywords) && std::holds_alternative<UnionShape>(obj.shape)) {
+            fail(t.location,
+                 "objects in `" + kw.text + "` must come before its modifiers: found `" + w + "` after a modifier");
+        } else {
+            return;
+        }
+    }
+}
+
+inline ObjectPhotons Parser::parse_object_photons(const Token& kw) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    ObjectPhotons p;
+    p.at = kw.location;
+    for (;;) {
+        const Token t = peek();
+        if (t.is_identifier("target")) {
+            next();
+            p.target = true;
+            if (starts_expression(peek())) p.spacing_multiplier = parse_float("the spacing multiplier of `target`");
+        } else if (t.is_identifier("reflection")) {
+            next();
+            p.reflection = parse_optional_bool();
+        } else if (t.is_identifier("refraction")) {
+            next();
+            p.refraction = parse_optional_bool();
+        } else if (t.is_identifier("collect")) {
+            next();
+            p.collect = parse_optional_bool();
+        } else if (t.is_identifier("pass_through")) {
+            next();
+            p.pass_through = parse_optional_bool();
+        } else if (t.is_identifier("split_union")) {
+            next();
+            parse_optional_bool();
+        } else {
+            break;
+        }
+    }
+    close_block(kw, "`target`, `reflection`, `refraction`, `collect` or `pass_through`",
+                {"target", "reflection", "refraction", "collect", "pass_through", "split_union"});
+    return p;
+}
+
+}  // namespace photon::dsl::detail

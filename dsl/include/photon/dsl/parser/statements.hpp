@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Top-level statements of a scene file, and the start of reading.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+inline SceneDescription Parser::parse_main(std::shared_ptr<const SourceFile> file, std::filesystem::path canonical) {
+    scene_.at = {file, 1, 1};
+    scene_.files.push_back(file);
+    files_.push_back({Lexer(file), std::move(canonical)});
+    parse_statements();
+    return std::move(scene_);
+}
+
+inline void Parser::parse_statements() {
+    std::size_t primitives = 0;
+    for (;;) {
+        const Token t = peek();
+        if (t.kind == TokenKind::end_of_file) {
+            if (scene_.objects.empty() && !scene_.camera) {
+                if (statements_ == 0)
+                    fail({t.location.file, 1, 1},
+                         "empty scene file: expected a camera, a light_source or an object, found end of file");
+                fail(t.location, "nothing to render: expected a light_source or an object, found end of file");
+            }
+            return;
+        }
+        ++statements_;
+        if (t.kind == TokenKind::identifier) {
+            const std::string& w = t.text;
+            if (w == "camera") {
+                if (scene_.camera)
+                    warn(t.location, "this camera replaces the one at " + position_in(scene_.camera->at, t.location));
+                scene_.camera = parse_camera(next());
+                continue;
+            }
+            if (w == "global_settings") {
+                parse_global_settings(next());
+                continue;
+            }
+            if (w == "background") {
+                const Token kw = next();
+                open_block(kw);
+                const Color c = parse_color("the background colour");
+                close_block(kw, "nothing more");
+                if (c.rgb != Vector3(0.0))
+                    warn(kw.location, "the background colour is ignored: photon's background is black");
+                continue;
+            }
+            if (one_of(w, {"sky_sphere", "fog", "rainbow", "media", "photons", "radiosity"}))
+                fail(t.location,
+                     "`" + w + "` is not supported by photon" +
+                         std::string(w == "photons" || w == "radiosity" ? " here: it belongs in `global_settings`"
+                                                                        : ""));
+            if (one_of(w, unsupported_objects)) unsupported_object(t);
+            if (one_of(w, object_keywords)) {
+                Object obj = parse_object(next());
+                if (!std::holds_alternative<LightSource>(obj.shape)) obj.default_texture = default_texture_;
+                primitives += obj.primitives;
+                if (primitives > options_.max_primitives)
+                    fail(t.location, "the scene is too large: more than " + std::to_string(options_.max_primitives) +
+                                         " objects and triangles");
+                scene_.objects.push_back(std::move(obj));
+                continue;
+            }
+            if (const Value* v = lookup(w)) {
+                std::string hint = " (" + type_name(v->data) + ")";
+                if (std::holds_alternative<Object>(v->data))
+                    hint = " (" + type_name(v->data) + ": write `object { " + w + " }`)";
+                fail_expected("a statement (camera, light_source, an object, global_settings or a #directive)", t,
+                              hint);
+            }
+            fail_expected("a statement (camera, light_source, an object, global_settings or a #directive)", t,
+                          suggest(w, statement_keywords));
+        }
+        fail_expected("a statement (camera, light_source, an object, global_settings or a #directive)", t);
+    }
+}
+
+}  // namespace photon::dsl::detail

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Token stream: the files being read, `#include`, tokens with one of lookahead, and blocks.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+inline void Parser::fail(const SourceLocation& at, std::string message) const { throw Error(at, std::move(message)); }
+
+inline void Parser::fail_expected(const std::string& expected, const Token& found, const std::string& hint) const {
+    fail(found.location, "expected " + expected + ", found " + describe(found) + hint);
+}
+
+inline void Parser::warn(const SourceLocation& at, const std::string& message) {
+    if (!warned_.insert(at.str() + '\x1f' + message).second) return;
+    if (options_.diagnostics) options_.diagnostics({Severity::warning, at, message});
+}
+
+inline std::string Parser::too_large_message(std::size_t bytes) const {
+    return "file too large: " + std::to_string(bytes) + " bytes, photon reads scene files of at most " +
+           std::to_string(options_.max_file_bytes) + " bytes";
+}
+
+inline std::filesystem::path Parser::weakly_canonical(const std::filesystem::path& p) {
+    std::error_code ec;
+    auto c = std::filesystem::weakly_canonical(p, ec);
+    return ec ? std::filesystem::absolute(p) : c;
+}
+
+inline std::shared_ptr<const SourceFile> Parser::load(const std::filesystem::path& path, std::string name,
+                                                      const SourceLocation& from) {
+    std::error_code ec;
+    const SourceLocation where =
+        from.known() ? from : SourceLocation{std::make_shared<SourceFile>(SourceFile{name, {}}), 0, 0};
+    if (std::filesystem::is_directory(path, ec)) fail(where, "cannot read \"" + name + "\": it is a directory");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) fail(where, "cannot open \"" + name + "\": " + ec.message());
+    if (size > options_.max_file_bytes) fail(where, too_large_message(std::size_t(size)));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(where, "cannot open \"" + name + "\"");
+    std::string text(std::size_t(size), '\0');
+    in.read(text.data(), std::streamsize(size));
+    if (!in) fail(where, "cannot read \"" + name + "\"");
+    return std::make_shared<SourceFile>(SourceFile{std::move(name), std::move(text)});
+}
+
+inline void Parser::directive_include(const Token& d) {
+    const Token s = next();
+    if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `#include`", s);
+    if (files_.size() >= options_.max_include_depth)
+        fail(s.location, "includes nested too deep: more than " + std::to_string(options_.max_include_depth) +
+                             " files open at once");
+    namespace fs = std::filesystem;
+    if (options_.read_include) {
+        include_from_reader(s);
+        return;
+    }
+    const fs::path name(s.text);
+    std::vector<fs::path> candidates;
+    if (name.is_absolute()) {
+        candidates.push_back(name);
+    } else {
+        candidates.push_back(files_.back().path.parent_path() / name);
+        for (const auto& dir : options_.include_paths) candidates.push_back(dir / name);
+    }
+    std::error_code ec;
+    fs::path found;
+    for (const auto& c : candidates)
+        if (fs::is_regular_file(c, ec)) {
+            found = c;
+            break;
+        }
+    if (found.empty()) {
+        std::string where;
+        for (const auto& c : candidates)
+            where += (where.empty() ? "" : ", ") + c.parent_path().lexically_normal().string();
+        fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")");
+    }
+    const fs::path canonical = weakly_canonical(found);
+    check_include_loop(canonical, s);
+    (void)d;
+    std::string display = found.lexically_normal().string();
+    if (const auto rel = fs::proximate(found, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
+        display = rel.lexically_normal().string();
+    auto file = load(found, display, s.location);
+    scene_.files.push_back(file);
+    files_.push_back({Lexer(file), canonical});
+    scopes_.emplace_back();
+}
+
+/// `#include` through ParseOptions::read_include: the name alone identifies the file.
+inline void Parser::include_from_reader(const Token& s) {
+    const std::filesystem::path key = std::filesystem::path("<memory>") / s.text;
+    check_include_loop(key, s);
+    std::optional<std::string> text = options_.read_include(s.text);
+    if (!text) fail(s.location, "cannot find the include file \"" + s.text + "\"");
+    if (text->size() > options_.max_file_bytes) fail(s.location, too_large_message(text->size()));
+    auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(*text)});
+    scene_.files.push_back(file);
+    files_.push_back({Lexer(file), key});
+    scopes_.emplace_back();
+}
+
+inline void Parser::check_include_loop(const std::filesystem::path& canonical, const Token& s) const {
+    for (std::size_t i = 0; i < files_.size(); ++i)
+        if (files_[i].path == canonical) {
+            std::string chain;
+            for (std::size_t j = i; j < files_.size(); ++j) chain += files_[j].lexer.file()->name + " includes ";
+            fail(s.location, "include loop: " + chain + "\"" + s.text + "\" again");
+        }
+}
+
+inline Token Parser::raw_token() {
+    for (;;) {
+        if (++tokens_ > options_.max_tokens) {
+            const Lexer& lexer = files_.back().lexer;
+            fail({lexer.file(), lexer.state().line, lexer.state().column},
+                 "the scene is too long: more than " + std::to_string(options_.max_tokens) + " tokens read");
+        }
+        Token t = files_.back().lexer.next();
+        if (t.kind != TokenKind::end_of_file) return t;
+        if (!conds_.empty() && conds_.back().file_depth == files_.size()) {
+            const CondFrame& c = conds_.back();
+            fail(t.location, "expected `#end` to close the `" +
+                                 std::string(c.kind == CondKind::if_ ? "#if" : "#while") + "` opened at " +
+                                 position(c.at) + ", found end of file");
+        }
+        if (files_.size() == 1) return t;
+        files_.pop_back();
+        scopes_.pop_back();
+    }
+}
+
+inline std::string Parser::position(const SourceLocation& at) {
+    return std::to_string(at.line) + ":" + std::to_string(at.column);
+}
+
+inline std::string Parser::position_in(const SourceLocation& at, const SourceLocation& from) const {
+    if (at.file == from.file) return position(at);
+    return at.str();
+}
+
+inline const Token& Parser::peek() {
+    for (;;) {
+        if (lookahead_) {
+            if (lookahead_->kind != TokenKind::directive || suppress_ > 0) return *lookahead_;
+            Token d = std::move(*lookahead_);
+            lookahead_.reset();
+            directive(d);
+            continue;
+        }
+        lookahead_ = raw_token();
+    }
+}
+
+inline Token Parser::next() {
+    peek();
+    Token t = std::move(*lookahead_);
+    lookahead_.reset();
+    return t;
+}
+
+inline bool Parser::accept_symbol(std::string_view s) {
+    if (!peek().is_symbol(s)) return false;
+    next();
+    return true;
+}
+
+inline Token Parser::expect_symbol(std::string_view s, const std::string& context) {
+    if (!peek().is_symbol(s)) fail_expected("`" + std::string(s) + "` " + context, peek());
+    return next();
+}
+
+inline void Parser::optional_comma() { accept_symbol(","); }
+
+/// `{` after a block keyword.
+inline void Parser::open_block(const Token& keyword) {
+    if (!peek().is_symbol("{")) fail_expected("`{` after `" + keyword.text + "`", peek());
+    next();
+}
+
+/// `}` closing the block of `keyword`; `items` names what else could come.
+inline void Parser::close_block(const Token& keyword, const std::string& items, Words known) {
+    const Token& t = peek();
+    if (t.is_symbol("}")) {
+        next();
+        return;
+    }
+    const std::string close =
+        "`}` to close `" + keyword.text + "` (opened at " + position_in(keyword.location, t.location) + ")";
+    if (t.kind == TokenKind::end_of_file) fail_expected(close, t);
+    std::string hint;
+    if (t.kind == TokenKind::identifier && known.size() > 0) hint = suggest(t.text, known);
+    fail_expected(items + " or " + close, t, hint);
+}
+
+/// Skips a `{ ... }` block after `kw`, nested blocks included.
+inline void Parser::skip_block(const Token& kw) {
+    open_block(kw);
+    int depth = 1;
+    while (depth > 0) {
+        const Token t = next();
+        if (t.kind == TokenKind::end_of_file)
+            fail_expected("`}` to close `" + kw.text + "` (opened at " + position_in(kw.location, t.location) + ")", t);
+        if (t.is_symbol("{")) ++depth;
+        if (t.is_symbol("}")) --depth;
+    }
+}
+
+}  // namespace photon::dsl::detail
