@@ -64,7 +64,7 @@ struct SceneOptions {
         cmd.add_option("-D,--define", defines, "Declare a float before reading the scene: NAME=VALUE (repeatable)")
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-        cmd.add_option("-I,--include-path", include_paths, "Also look for #include files in DIR (repeatable)")
+        cmd.add_option("-I,--include-path", include_paths, "Also look for #include files in DIR (repeatable), before PHOTON_INCLUDE_PATH and POV-Ray's own include directory")
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd.add_flag("--strict", strict, "Treat warnings as errors (exit status 1)");
@@ -84,6 +84,7 @@ struct SceneOptions {
         o.image_width = width;
         o.image_height = height;
         for (const auto& dir : include_paths) o.include_paths.emplace_back(dir);
+        for (auto& dir : dsl::standard_include_paths()) o.include_paths.push_back(std::move(dir));
         for (const auto& d : defines) {
             const auto eq = d.find('=');
             const std::string name = d.substr(0, eq);

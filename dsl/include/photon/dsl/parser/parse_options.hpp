@@ -8,10 +8,14 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <cstdlib>
 #include <optional>
-#include <photon/version.hpp>
 #include <string>
+#include <string_view>
+#include <system_error>
 #include <vector>
+
+#include <photon/version.hpp>
 
 #include "../diagnostics.hpp"
 
@@ -41,5 +45,29 @@ struct ParseOptions {
     std::uint64_t max_loop_iterations = 1'000'000;  ///< per #while loop
     std::size_t max_primitives = 10'000'000;        ///< objects and mesh triangles in the scene
 };
+
+/// Where POV-Ray's standard include files (colors.inc, textures.inc, ...) are looked for after
+/// the scene's own directory and the caller's paths: each directory of the environment variable
+/// PHOTON_INCLUDE_PATH (separated by `:`), then POV-Ray 3.7's install directories (Debian's
+/// povray-includes package puts them in /usr/share/povray-3.7/include) when they exist. photon
+/// ships no copies of them: POV-Ray's licence covers those files, and the installed ones match
+/// the POV-Ray a user compares with.
+[[nodiscard]] inline std::vector<std::filesystem::path> standard_include_paths() {
+    std::vector<std::filesystem::path> dirs;
+    if (const char* env = std::getenv("PHOTON_INCLUDE_PATH")) {
+        std::string_view rest(env);
+        while (!rest.empty()) {
+            const std::size_t colon = rest.find(':');
+            const std::string_view dir = rest.substr(0, colon);
+            if (!dir.empty()) dirs.emplace_back(std::string(dir));
+            rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+        }
+    }
+    for (const char* dir : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"}) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(dir, ec)) dirs.emplace_back(dir);
+    }
+    return dirs;
+}
 
 }  // namespace photon::dsl

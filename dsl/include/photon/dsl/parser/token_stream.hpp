@@ -75,7 +75,13 @@ inline void Parser::directive_include(const Token& d) {
         std::string where;
         for (const auto& c : candidates)
             where += (where.empty() ? "" : ", ") + c.parent_path().lexically_normal().string();
-        fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")");
+        // POV-Ray's standard includes are the usual miss: say where photon finds them.
+        const bool pov_include = name.extension() == ".inc";
+        fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")" +
+                             (pov_include ? "; POV-Ray's standard includes come with POV-Ray (Debian: povray-includes, "
+                                            "read from /usr/share/povray-3.7/include), or name their folder with -I "
+                                            "or PHOTON_INCLUDE_PATH"
+                                          : ""));
     }
     const fs::path canonical = weakly_canonical(found);
     check_include_loop(canonical, s);
