@@ -13,6 +13,13 @@ inline void Parser::directive(const Token& d) {
     // whose `#end` re-reads the condition); bounded like any nesting, so that no chain of
     // them can overflow the stack.
     const Nest nest(*this, d.location);
+    // A directive met while a block's parameter is read (`sphere { 0, 1 #if (A = 1) ...`) has
+    // its own expressions, where comparisons need no parentheses.
+    struct Restore {
+        bool& flag;
+        bool saved;
+        ~Restore() { flag = saved; }
+    } restore{in_vector_, std::exchange(in_vector_, false)};
     ++statements_;
     const std::string& name = d.text;
     if (name == "declare" || name == "local") {

@@ -187,6 +187,7 @@ inline Numeric Parser::parse_primary() {
             v.c[std::size_t(v.dim++)] = c.c[0];
             if (accept_symbol(",")) continue;
             if (peek().is_symbol(">")) break;
+            if (starts_expression(peek())) continue;  // POV-Ray's commas between components are optional
             fail_expected("`,` or `>` in the vector opened at " + position(t.location), peek());
         }
         next();

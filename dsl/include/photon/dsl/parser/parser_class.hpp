@@ -138,6 +138,7 @@ private:
     double to_float(const Numeric& n, const std::string& what, const SourceLocation& at) const;
     Vector3 to_vector(const Numeric& n, const std::string& what, const SourceLocation& at) const;
     static Color to_color(const Numeric& n);
+    Numeric parse_parameter_for(const std::string& what);
     double parse_float(const std::string& what, SourceLocation* where = nullptr);
     Vector3 parse_vector(const std::string& what, SourceLocation* where = nullptr);
     std::int64_t parse_integer(const std::string& what, double lo, double hi);
@@ -199,7 +200,7 @@ private:
     std::size_t statements_ = 0;
     unsigned depth_ = 0;
     int suppress_ = 0;
-    bool in_vector_ = false;
+    bool in_vector_ = false;  ///< comparisons need parentheses: in a vector or a block's parameter
     bool mentions_photon_version_ = false;
 };
 
