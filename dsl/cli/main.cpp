@@ -81,6 +81,7 @@ struct SceneOptions {
     dsl::ParseOptions parse_options(unsigned width, unsigned height) {
         dsl::ParseOptions o;
         o.diagnostics = sink();
+        o.geometry = dsl::library_object_geometry();  // trace(), min_extent(), max_extent()
         o.image_width = width;
         o.image_height = height;
         for (const auto& dir : include_paths) o.include_paths.emplace_back(dir);

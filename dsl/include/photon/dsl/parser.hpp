@@ -17,6 +17,7 @@
 #include "parser/directives.hpp"
 #include "parser/expressions.hpp"
 #include "parser/builtins.hpp"
+#include "parser/object_queries.hpp"
 #include "parser/typed_values.hpp"
 #include "parser/transforms.hpp"
 #include "parser/materials.hpp"

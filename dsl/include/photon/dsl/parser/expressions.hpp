@@ -228,6 +228,7 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         return Numeric::scalar(options_.image_height);
     }
     if (one_of(w, functions)) return parse_function(next());
+    if (one_of(w, object_query_functions)) return parse_object_query(next());
     if (const Value* v = lookup(w)) {
         if (w == "photon_version") mentions_photon_version_ = true;
         if (const auto* n = std::get_if<Numeric>(&v->data)) {

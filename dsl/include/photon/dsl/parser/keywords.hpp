@@ -72,6 +72,8 @@ inline constexpr std::string_view functions[] = {
     "abs", "acos",  "asin", "atan", "atan2", "ceil",   "cos",  "cosh",    "defined",    "degrees", "div",
     "exp", "floor", "int",  "ln",   "log",   "max",    "min",  "mod",     "pow",        "radians", "select",
     "sin", "sinh",  "sqrt", "tan",  "tanh",  "vcross", "vdot", "vlength", "vnormalize", "vrotate"};
+/// Functions that ask an object's geometry (parser/object_queries.hpp).
+inline constexpr std::string_view object_query_functions[] = {"trace", "min_extent", "max_extent"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",

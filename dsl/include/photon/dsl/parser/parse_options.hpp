@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -17,6 +18,7 @@
 
 #include <photon/version.hpp>
 
+#include "../description.hpp"
 #include "../diagnostics.hpp"
 
 namespace photon::dsl {
@@ -24,6 +26,21 @@ namespace photon::dsl {
 /// Value of the identifier `photon_version` that photon declares before reading a scene, so that
 /// `#ifdef (photon_version)` selects photon's own settings (POV-Ray skips them).
 inline constexpr double photon_version = double(PHOTON_VERSION_MAJOR) + double(PHOTON_VERSION_MINOR) / 10.0;
+
+/// What POV-Ray's trace(), min_extent() and max_extent() ask of an object while the scene is
+/// read. The parser holds no geometry: the library answers (object_geometry.hpp's
+/// library_object_geometry(), which the CLI sets).
+struct ObjectGeometry {
+    struct Bounds {
+        Vector3 min, max;
+    };
+    struct Hit {
+        Vector3 point, normal;
+    };
+    std::function<Bounds(const Object&)> bounds;
+    /// The first hit of the ray origin + t direction, t > 0; nullopt when it misses.
+    std::function<std::optional<Hit>(const Object&, const Vector3& origin, const Vector3& direction)> trace;
+};
 
 struct ParseOptions {
     /// Searched for `#include` files after the including file's own directory.
@@ -35,6 +52,8 @@ struct ParseOptions {
     /// Floats declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
     std::map<std::string, double> defines;
     DiagnosticSink diagnostics;
+    /// Answers trace(), min_extent() and max_extent(); without it they are an error.
+    std::shared_ptr<const ObjectGeometry> geometry;
     /// Values of POV-Ray's `image_width` and `image_height`.
     unsigned image_width = 800, image_height = 600;
 

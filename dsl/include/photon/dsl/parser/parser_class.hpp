@@ -131,6 +131,9 @@ private:
     Numeric parse_primary();
     Numeric parse_identifier_value(const Token& t);
 
+    // object_queries.hpp
+    Numeric parse_object_query(const Token& f);
+
     // builtins.hpp
     Numeric parse_function(const Token& f);
 

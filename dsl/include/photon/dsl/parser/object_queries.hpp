@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// POV-Ray's functions that ask an object's geometry while the scene is read: trace(),
+// min_extent() and max_extent(). The parser holds no geometry; ParseOptions::geometry answers.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+// OBJECT_QUERY: trace ( OBJECT_ID , FROM , DIRECTION [, NORMAL_ID] ) | min_extent ( OBJECT_ID )
+//             | max_extent ( OBJECT_ID )
+inline Numeric Parser::parse_object_query(const Token& f) {
+    const std::string& w = f.text;
+    expect_symbol("(", "after `" + w + "`");
+    const bool saved = in_vector_;
+    in_vector_ = false;
+    const Token id = next();
+    const Value* v = id.kind == TokenKind::identifier ? lookup(id.text) : nullptr;
+    if (!v || !std::holds_alternative<Object>(v->data) || std::holds_alternative<LightSource>(std::get<Object>(v->data).shape))
+        fail_expected("an object identifier as the first argument of `" + w + "`", id);
+    const Object obj = std::get<Object>(v->data);
+    if (!options_.geometry)
+        fail(f.location, "`" + w + "` needs the object's geometry while the scene is read: set ParseOptions::geometry "
+                         "(photon::dsl::library_object_geometry())");
+    Numeric result;
+    if (w == "trace") {
+        expect_symbol(",", "after the object of `trace`");
+        const SourceLocation from_at = peek().location;
+        const Vector3 from = to_vector(parse_expression_for("the ray's origin in `trace`"), "the ray's origin", from_at);
+        expect_symbol(",", "after the ray's origin in `trace`");
+        const SourceLocation dir_at = peek().location;
+        const Vector3 dir = to_vector(parse_expression_for("the ray's direction in `trace`"), "the ray's direction", dir_at);
+        if (glm::length(dir) == 0.0) fail(dir_at, "the direction of `trace` must not be zero");
+        std::optional<Token> normal_id;
+        if (accept_symbol(",")) {
+            normal_id = next();
+            if (normal_id->kind != TokenKind::identifier || is_reserved(normal_id->text))
+                fail_expected("an identifier to receive the normal in `trace`", *normal_id);
+        }
+        expect_symbol(")", "to close the arguments of `trace`");
+        const auto hit = options_.geometry->trace(obj, from, dir);
+        // POV-Ray's answer for a miss: the point and the normal are <0, 0, 0>.
+        result = Numeric::vector(hit ? hit->point : Vector3(0.0));
+        if (normal_id) {
+            const Numeric n = Numeric::vector(hit ? hit->normal : Vector3(0.0));
+            Value* existing = nullptr;
+            for (auto it = scopes_.rbegin(); it != scopes_.rend() && !existing; ++it)
+                if (auto found = it->find(normal_id->text); found != it->end()) existing = &found->second;
+            if (existing)
+                *existing = Value{n, normal_id->location};
+            else
+                declare_global(normal_id->text, n, normal_id->location);
+        }
+    } else {
+        expect_symbol(")", "to close the arguments of `" + w + "`");
+        const ObjectGeometry::Bounds b = options_.geometry->bounds(obj);
+        result = Numeric::vector(w == "min_extent" ? b.min : b.max);
+    }
+    in_vector_ = saved;
+    return result;
+}
+
+}  // namespace photon::dsl::detail
