@@ -18,6 +18,7 @@
 #include "parser/expressions.hpp"
 #include "parser/builtins.hpp"
 #include "parser/object_queries.hpp"
+#include "parser/splines.hpp"
 #include "parser/typed_values.hpp"
 #include "parser/transforms.hpp"
 #include "parser/materials.hpp"

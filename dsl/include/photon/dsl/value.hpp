@@ -12,6 +12,7 @@
 #include <variant>
 
 #include "description.hpp"
+#include "spline.hpp"
 
 namespace photon::dsl {
 
@@ -65,7 +66,7 @@ struct Numeric {
 }
 
 using ValueData =
-    std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object, CameraDescription>;
+    std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object, CameraDescription, Spline>;
 
 /// A declared identifier's value and where it was declared.
 struct Value {
@@ -94,8 +95,10 @@ struct Value {
             return "a transform";
         case 7:
             return std::holds_alternative<LightSource>(std::get<Object>(v).shape) ? "a light_source" : "an object";
-        default:
+        case 8:
             return "a camera";
+        default:
+            return "a spline";
     }
 }
 

@@ -83,7 +83,7 @@ inline void Parser::directive(const Token& d) {
 
 inline bool Parser::is_reserved(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
-           one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
+           one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
            one_of(w, other_keywords);
 }
@@ -125,6 +125,8 @@ inline void Parser::directive_declare(const Token& d, bool local) {
             block = parse_transform_block(next());
         else if (w == "camera")
             block = parse_camera(next());
+        else if (w == "spline")
+            block = parse_spline(next());
         else if (one_of(w, object_keywords)) {
             block = parse_object(next());
         } else if (one_of(w, unsupported_objects)) {

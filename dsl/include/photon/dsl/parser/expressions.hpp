@@ -235,6 +235,10 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
             next();
             return *n;
         }
+        if (const auto* sp = std::get_if<Spline>(&v->data)) {
+            const Spline spline = *sp;  // the call may redeclare it
+            return parse_spline_call(next(), spline);
+        }
         fail(t.location, "expected " + (expecting_.empty() ? std::string("a number or vector") : expecting_) +
                              ", found `" + w + "` (" + type_name(v->data) + ", declared at " +
                              position_in(v->at, t.location) + ")");

@@ -74,6 +74,9 @@ inline constexpr std::string_view functions[] = {
     "sin", "sinh",  "sqrt", "tan",  "tanh",  "vcross", "vdot", "vlength", "vnormalize", "vrotate"};
 /// Functions that ask an object's geometry (parser/object_queries.hpp).
 inline constexpr std::string_view object_query_functions[] = {"trace", "min_extent", "max_extent"};
+/// Kinds of `spline { }` (parser/splines.hpp).
+inline constexpr std::string_view spline_keywords[] = {"spline", "linear_spline", "quadratic_spline", "cubic_spline",
+                                                      "natural_spline"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",

@@ -131,6 +131,10 @@ private:
     Numeric parse_primary();
     Numeric parse_identifier_value(const Token& t);
 
+    // splines.hpp
+    Spline parse_spline(const Token& kw);
+    Numeric parse_spline_call(const Token& id, const Spline& s);
+
     // object_queries.hpp
     Numeric parse_object_query(const Token& f);
 

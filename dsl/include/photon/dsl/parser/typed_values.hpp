@@ -75,7 +75,7 @@ inline bool Parser::starts_expression(const Token& t) const {
         one_of(t.text, color_keywords))
         return true;
     const Value* v = lookup(t.text);
-    return v && std::holds_alternative<Numeric>(v->data);
+    return v && (std::holds_alternative<Numeric>(v->data) || std::holds_alternative<Spline>(v->data));
 }
 
 /// `on`, `off`, any number, or nothing (meaning on).
