@@ -15,6 +15,7 @@
 
 #include "parser/token_stream.hpp"
 #include "parser/directives.hpp"
+#include "parser/file_io.hpp"
 #include "parser/expressions.hpp"
 #include "parser/builtins.hpp"
 #include "parser/object_queries.hpp"

@@ -70,14 +70,23 @@ inline void Parser::directive(const Token& d) {
         if (name == "warning") warn(d.location, "#warning: " + s.text);
     } else if (name == "default") {
         directive_default(d);
-    } else if (one_of(name, {"macro", "switch", "case", "range", "break", "for", "fopen", "fclose", "read", "write",
+    } else if (name == "fopen") {
+        directive_fopen(d);
+    } else if (name == "fclose") {
+        directive_fclose(d);
+    } else if (name == "read") {
+        directive_read(d);
+    } else if (name == "write") {
+        directive_write(d);
+    } else if (one_of(name, {"macro", "switch", "case", "range", "break", "for",
                              "statistics", "render"})) {
         fail(d.location, "`#" + name + "` is not supported by photon's scene language (see docs/scene-language.md)");
     } else {
         fail(d.location,
              "unknown directive `#" + name + "`" +
                  suggest(name, {"declare", "local", "undef", "include", "if", "ifdef", "ifndef", "else", "elseif",
-                                "end", "while", "version", "warning", "error", "debug", "default"}));
+                                "end", "while", "version", "warning", "error", "debug", "default", "fopen", "fclose",
+                                "read", "write"}));
     }
 }
 

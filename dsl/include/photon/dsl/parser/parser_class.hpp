@@ -90,6 +90,7 @@ private:
                                            const SourceLocation& from);
     void directive_include(const Token& d);
     void include_from_reader(const Token& s);
+    void push_included_text(const Token& s, std::string text, const std::filesystem::path& key);
     void check_include_loop(const std::filesystem::path& canonical, const Token& s) const;
     Token raw_token();
     static std::string position(const SourceLocation& at);
@@ -130,6 +131,20 @@ private:
     Numeric parse_postfix();
     Numeric parse_primary();
     Numeric parse_identifier_value(const Token& t);
+
+    // file_io.hpp
+    struct OpenFile {
+        std::string name, text;
+        std::size_t pos = 0;  ///< next character to #read
+        bool writing = false;
+    };
+    void assign_identifier(const std::string& name, ValueData v, const SourceLocation& at);
+    void directive_fopen(const Token& d);
+    void directive_fclose(const Token& d);
+    void directive_write(const Token& d);
+    void directive_read(const Token& d);
+    OpenFile& open_file(const Token& id, const std::string& directive);
+    void close_file(const std::string& id);
 
     // splines.hpp
     Spline parse_spline(const Token& kw);
@@ -209,6 +224,8 @@ private:
     int suppress_ = 0;
     bool in_vector_ = false;  ///< comparisons need parentheses: in a vector or a block's parameter
     bool mentions_photon_version_ = false;
+    std::map<std::string, OpenFile> open_files_;        ///< by file identifier
+    std::map<std::string, std::string> written_files_;  ///< by file name: what #write wrote, in memory
 };
 
 }  // namespace photon::dsl::detail

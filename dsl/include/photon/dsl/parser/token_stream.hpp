@@ -52,6 +52,11 @@ inline void Parser::directive_include(const Token& d) {
         fail(s.location, "includes nested too deep: more than " + std::to_string(options_.max_include_depth) +
                              " files open at once");
     namespace fs = std::filesystem;
+    // A file the scene wrote itself (`#fopen ... write`) is kept in memory: read it from there.
+    if (const auto it = written_files_.find(s.text); it != written_files_.end()) {
+        push_included_text(s, it->second, fs::path("<written>") / s.text);
+        return;
+    }
     if (options_.read_include) {
         include_from_reader(s);
         return;
@@ -98,11 +103,16 @@ inline void Parser::directive_include(const Token& d) {
 /// `#include` through ParseOptions::read_include: the name alone identifies the file.
 inline void Parser::include_from_reader(const Token& s) {
     const std::filesystem::path key = std::filesystem::path("<memory>") / s.text;
-    check_include_loop(key, s);
     std::optional<std::string> text = options_.read_include(s.text);
     if (!text) fail(s.location, "cannot find the include file \"" + s.text + "\"");
-    if (text->size() > options_.max_file_bytes) fail(s.location, too_large_message(text->size()));
-    auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(*text)});
+    push_included_text(s, std::move(*text), key);
+}
+
+/// Reads `text` in place of the `#include` at `s`; `key` identifies it for include loops.
+inline void Parser::push_included_text(const Token& s, std::string text, const std::filesystem::path& key) {
+    check_include_loop(key, s);
+    if (text.size() > options_.max_file_bytes) fail(s.location, too_large_message(text.size()));
+    auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(text)});
     scene_.files.push_back(file);
     files_.push_back({Lexer(file), key});
     scopes_.emplace_back();
