@@ -606,7 +606,7 @@ TEST_CASE("render settings: POV-Ray's keywords, photon's own, then overrides", "
     CHECK(s.seed == 42);
 
     dsl::SettingsOverrides o;
-    o.width = 40, o.mode = RenderMode::pm, o.global_photons = 10, o.seed = 7, o.caustic_radius = 0.1f;
+    o = {{"width", 40u}, {"mode", "pm"}, {"global_photons", 10u}, {"seed", 7u}, {"caustic_estimate.max_radius", 0.1}};
     const auto b2 = built(text, nullptr, o);
     CHECK(b2.settings.width == 40);
     CHECK(b2.settings.height == 200);
@@ -645,7 +645,7 @@ TEST_CASE("render_mode sppm and its passes: from the file, the command line, and
     CHECK(b.settings.sppm_passes == 12);
     CHECK(b.settings.sppm_photons_per_pass == 3456);
     dsl::SettingsOverrides o;
-    o.sppm_passes = 5, o.sppm_photons_per_pass = 77;
+    o = {{"sppm_passes", 5u}, {"sppm_photons_per_pass", 77u}};
     const auto b2 = built(text, nullptr, o);
     CHECK(b2.settings.sppm_passes == 5);
     CHECK(b2.settings.sppm_photons_per_pass == 77);

@@ -201,7 +201,8 @@ private:
 
     // settings.hpp
     void parse_global_settings(const Token& kw);
-    void parse_estimate(const Token& kw, EstimateDescription& e);
+    void parse_table_setting(const RenderSetting& s, const Token& kw);
+    void parse_settings_block(const Token& kw);
     void parse_pov_photons(const Token& kw);
 
     // statements.hpp
