@@ -72,6 +72,8 @@ inline constexpr std::string_view functions[] = {
     "abs", "acos",  "asin", "atan", "atan2", "ceil",   "cos",  "cosh",    "defined",    "degrees", "div",
     "exp", "floor", "int",  "ln",   "log",   "max",    "min",  "mod",     "pow",        "radians", "select",
     "sin", "sinh",  "sqrt", "tan",  "tanh",  "vcross", "vdot", "vlength", "vnormalize", "vrotate"};
+/// Arrays' keywords (parser/arrays.hpp); `dimensions` and `dimension_size` are functions.
+inline constexpr std::string_view array_keywords[] = {"array", "mixed", "dimensions", "dimension_size"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",
