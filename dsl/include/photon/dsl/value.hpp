@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -68,7 +69,7 @@ struct Numeric {
 }
 
 /// `material { texture { } interior { } }`: what it sets on the object it is used in.
-struct Material {
+struct MaterialBlock {
     std::optional<Texture> texture;
     std::optional<Interior> interior;
     SourceLocation at;
@@ -94,12 +95,14 @@ struct Array {
 };
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
-                               CameraDescription, Material, Array>;
+                               CameraDescription, MaterialBlock, Array>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
 /// names the caller's identifier: `ref_name` in the scope `ref_scope`.
 struct Value {
+    Value() = default;
+    Value(ValueData d, SourceLocation a) : data(std::move(d)), at(std::move(a)) {}
     ValueData data;
     SourceLocation at;
     std::size_t ref_scope = no_ref;

@@ -117,7 +117,9 @@ inline void Parser::expand_array_element(Token& t) {
             fail(at, "index " + format_number(x) + " is out of the bounds of `" + t.text + "` (indices 0 to " +
                          std::to_string(sizes[dims] - 1) + " in dimension " + std::to_string(dims + 1) +
                          ", declared at " + position_in(declared, at) + ")");
-        name += "[" + std::to_string(std::size_t(x)) + "]";
+        name += '[';
+        name += std::to_string(std::size_t(x));
+        name += ']';
         ++dims;
     }
     if (dims == 0) return;

@@ -14,6 +14,14 @@ inline void Parser::directive(const Token& d) {
     // them can overflow the stack.
     const Nest nest(*this, d.location);
     ++statements_;
+    // A directive in a macro body called inside a vector reads its own expressions.
+    const bool saved_in_vector = in_vector_;
+    in_vector_ = false;
+    struct Restore {
+        bool& flag;
+        bool value;
+        ~Restore() { flag = value; }
+    } restore{in_vector_, saved_in_vector};
     const std::string& name = d.text;
     if (name == "declare" || name == "local") {
         directive_declare(d, name == "local");
@@ -144,18 +152,20 @@ inline void Parser::directive_declare(const Token& d, bool local) {
     expect_symbol("=", "after `#" + d.text + " " + id.text + "`");
     bool needs_semicolon = false;
     ValueData v = parse_rvalue("the value of `" + id.text + "`", needs_semicolon);
-    if (!needs_semicolon) {
-        assign(id, std::move(v), local);
-        accept_symbol(";");
-        return;
-    }
+    const bool semicolon_optional = !needs_semicolon || std::holds_alternative<std::string>(v);
+    assign(id, std::move(v), local);  // before the next token, which may use it (a macro call's argument)
+    // The next directive is not run from here (it runs after this one returns), so that a file
+    // of declarations does not nest one directive inside the other.
     suppress_.push_back(home);
     const Token after = peek();
     suppress_.pop_back();
-    if (!after.is_symbol(";"))
+    if (after.is_symbol(";")) {
+        next();
+        return;
+    }
+    // POV-Ray reads a block or a string without the `;`.
+    if (!semicolon_optional)
         fail(after.location, "expected `;` after the value of `" + id.text + "`, found " + describe(after));
-    assign(id, std::move(v), local);
-    next();
 }
 
 /// A declarable block starting at `t` (texture { }, sphere { }, array[3], ...), or a declared
@@ -174,7 +184,7 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
         Object holder;
         const Token kw = next();
         parse_material(kw, holder);
-        return Material{std::move(holder.texture), std::move(holder.interior), kw.location};
+        return MaterialBlock{std::move(holder.texture), std::move(holder.interior), kw.location};
     }
     if (one_of(w, object_keywords)) return parse_object(next());
     if (one_of(w, unsupported_objects)) unsupported_object(t);
@@ -227,10 +237,10 @@ inline void Parser::assign(const Token& id, ValueData v, bool local) {
                               "`, which is not local here: use `#declare`");
     std::size_t scope = found;
     std::string key = base;
-    if (found == Value::no_ref) {
-        scope = 0;
-    } else if (local && found != scopes_.size() - 1) {
+    if (local && found != scopes_.size() - 1) {
         scope = scopes_.size() - 1;
+    } else if (found == Value::no_ref) {
+        scope = 0;
     } else {
         // Follow parameters passed by reference to the identifier they name.
         for (;;) {

@@ -74,6 +74,10 @@ private:
     };
     enum class CondKind { if_, while_, for_, switch_ };
     struct CondFrame {
+        CondFrame(CondKind k, std::size_t depth, SourceLocation opened, Lexer::State start = {}, bool guard = false,
+                  std::uint64_t done = 0)
+            : kind(k), file_depth(depth), at(std::move(opened)), loop_start(start), photon_guard(guard),
+              iterations(done) {}
         CondKind kind;
         std::size_t file_depth;
         SourceLocation at;
