@@ -41,6 +41,8 @@ photon::dsl::ParseOptions fuzz_options() {
     o.max_tokens = 200'000;
     o.max_loop_iterations = 2'000;
     o.max_primitives = 2'000;
+    o.max_macro_depth = 64;
+    o.max_array_elements = 1 << 16;
     return o;
 }
 

@@ -52,7 +52,7 @@ TEST_CASE("unknown keywords", "[dsl][errors]") {
           "1:21: expected a light_source item (spotlight, area_light, fade_distance, fade_power, photons, translate, "
           "...) "
           "or `}` to close `light_source` (opened at 1:1), found `fade_distanse` (did you mean `fade_distance`?)");
-    CHECK(error_of("#foo\n") == "1:1: unknown directive `#foo`");
+    CHECK(error_of("#foo\n") == "1:1: unknown directive `#foo` (did you mean `for`?)");
     CHECK(error_of("#inclde \"x.inc\"\n") == "1:1: unknown directive `#inclde` (did you mean `include`?)");
 }
 
@@ -219,9 +219,9 @@ TEST_CASE("directives used wrongly", "[dsl][errors]") {
     CHECK(error_of("#declare sphere = 1;\n") == "1:10: cannot #declare `sphere`: it is a keyword");
     CHECK(error_of("sphere { 0, 1 }\n#else\n") == "2:1: `#else` without a matching `#if`");
     CHECK(error_of("sphere { 0, 1 }\n#end\n") ==
-          "2:1: `#end` without a matching `#if`, `#ifdef`, `#ifndef` or `#while`");
-    CHECK(error_of("#macro M() sphere { 0, 1 } #end\n") ==
-          "1:1: `#macro` is not supported by photon's scene language (see docs/scene-language.md)");
+          "2:1: `#end` without a matching `#if`, `#ifdef`, `#ifndef`, `#while`, `#for`, `#switch` or `#macro`");
+    CHECK(error_of("#statistics\n") ==
+          "1:1: `#statistics` is not supported by photon's scene language (see docs/scene-language.md)");
     CHECK(error_of("#error \"stop here\"\n") == "1:1: #error: stop here");
     CHECK(error_of("#if 1 sphere { 0, 1 } #end") == "1:5: expected `(` after `#if`, found the number 1");
     CHECK(error_of("#include scene\n") ==

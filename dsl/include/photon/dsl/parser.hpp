@@ -2,8 +2,8 @@
 #pragma once
 // Reads a POV-Ray 3.7 scene file (the subset documented in docs/scene-language.md) into a
 // SceneDescription, evaluating it as POV-Ray does: directives (#declare, #local, #undef,
-// #include, #if/#ifdef/#ifndef/#else/#elseif/#end, #while, #default, #version, #warning,
-// #error) are handled in the token stream, so they may appear anywhere; expressions are
+// #include, #if/#ifdef/#ifndef/#else/#elseif/#end, #while, #for, #switch/#case/#range/#break,
+// #macro, #default, #version, #warning, #error) and macro calls are handled in the token stream, are handled in the token stream, so they may appear anywhere; expressions are
 // evaluated as they are read. Errors throw dsl::Error with the location; warnings go to
 // ParseOptions::diagnostics. Input is bounded (file size, include depth, nesting, loop
 // iterations, tokens, primitives), so no file can crash or hang the parser.
@@ -15,6 +15,9 @@
 
 #include "parser/token_stream.hpp"
 #include "parser/directives.hpp"
+#include "parser/macros.hpp"
+#include "parser/control_flow.hpp"
+#include "parser/arrays.hpp"
 #include "parser/file_io.hpp"
 #include "parser/expressions.hpp"
 #include "parser/builtins.hpp"

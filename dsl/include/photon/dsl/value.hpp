@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Values of POV-Ray's expressions and declarations: numbers, vectors and colours (one numeric
-// type of 0 to 5 components, as POV-Ray promotes between them), strings, and the declarable
-// blocks (pigment, finish, interior, texture, transform, object, camera).
+// type of 0 to 5 components, as POV-Ray promotes between them), strings, the declarable
+// blocks (pigment, finish, interior, texture, transform, object, camera, material) and arrays.
 
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "description.hpp"
 #include "spline.hpp"
@@ -65,13 +69,47 @@ struct Numeric {
     return s + ">";
 }
 
-using ValueData =
-    std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object, CameraDescription, Spline>;
+/// `material { texture { } interior { } }`: what it sets on the object it is used in.
+struct MaterialBlock {
+    std::optional<Texture> texture;
+    std::optional<Interior> interior;
+    SourceLocation at;
+};
 
-/// A declared identifier's value and where it was declared.
+struct Value;
+
+/// `array[N][M]...`: the sizes, and the elements in row-major order, each unset until assigned.
+/// Elements are shared between copies (copy on write), so `#declare B = A` and passing an
+/// array to a macro cost one pointer, as values keep POV-Ray's copy semantics.
+struct Array {
+    std::vector<std::size_t> sizes;
+    /// Null until an element is set; changed only where no other copy shares it.
+    std::shared_ptr<std::vector<std::shared_ptr<const Value>>> elements;
+    bool mixed = false;  ///< POV-Ray 3.8's `array mixed`: elements of different types
+    int kind = -1;       ///< the ValueData index of the elements (POV-Ray's arrays hold one type)
+    SourceLocation at;
+    [[nodiscard]] std::size_t count() const noexcept {
+        std::size_t n = 1;
+        for (std::size_t s : sizes) n *= s;
+        return n;
+    }
+};
+
+using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
+                               CameraDescription, MaterialBlock, Array, Spline>;
+
+/// A declared identifier's value and where it was declared. A macro parameter passed by
+/// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
+/// names the caller's identifier: `ref_name` in the scope `ref_scope`.
 struct Value {
+    Value() = default;
+    Value(ValueData d, SourceLocation a) : data(std::move(d)), at(std::move(a)) {}
     ValueData data;
     SourceLocation at;
+    std::size_t ref_scope = no_ref;
+    std::string ref_name;
+    static constexpr std::size_t no_ref = std::size_t(-1);
+    [[nodiscard]] bool is_reference() const noexcept { return ref_scope != no_ref; }
 };
 
 /// "a texture", "an object", ... for messages.
@@ -97,6 +135,10 @@ struct Value {
             return std::holds_alternative<LightSource>(std::get<Object>(v).shape) ? "a light_source" : "an object";
         case 8:
             return "a camera";
+        case 9:
+            return "a material";
+        case 10:
+            return "an array";
         default:
             return "a spline";
     }

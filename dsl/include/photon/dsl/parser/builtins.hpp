@@ -12,12 +12,16 @@ inline Numeric Parser::parse_function(const Token& f) {
     const bool saved = in_vector_;
     in_vector_ = false;
     if (w == "defined") {
-        const Token id = next();
+        Token id;
+        {
+            const ReadingName reading(*this);  // `defined(M)` does not call the macro M
+            id = next();
+        }
         if (id.kind != TokenKind::identifier) fail_expected("an identifier in `defined( )`", id);
         if (id.text == "photon_version") mentions_photon_version_ = true;
         expect_symbol(")", "to close `defined(`");
         in_vector_ = saved;
-        return Numeric::scalar(lookup(id.text) != nullptr);
+        return Numeric::scalar(lookup(id.text) != nullptr || macros_.count(id.text) > 0);
     }
     std::vector<Numeric> args;
     std::vector<SourceLocation> at;

@@ -13,26 +13,26 @@ inline void Parser::directive(const Token& d) {
     // whose `#end` re-reads the condition); bounded like any nesting, so that no chain of
     // them can overflow the stack.
     const Nest nest(*this, d.location);
-    // A directive met while a block's parameter is read (`sphere { 0, 1 #if (A = 1) ...`) has
-    // its own expressions, where comparisons need no parentheses.
+    ++statements_;
+    // A directive met inside a vector or a block's parameter (`sphere { 0, 1 #if (A = 1) ...`,
+    // a macro body called there) reads its own expressions, where comparisons need no parentheses.
+    const bool saved_in_vector = in_vector_;
+    in_vector_ = false;
     struct Restore {
         bool& flag;
-        bool saved;
-        ~Restore() { flag = saved; }
-    } restore{in_vector_, std::exchange(in_vector_, false)};
-    ++statements_;
+        bool value;
+        ~Restore() { flag = value; }
+    } restore{in_vector_, saved_in_vector};
     const std::string& name = d.text;
     if (name == "declare" || name == "local") {
         directive_declare(d, name == "local");
     } else if (name == "undef") {
-        const Token id = next();
-        if (id.kind != TokenKind::identifier) fail_expected("an identifier after `#undef`", id);
-        for (auto& scope : scopes_) scope.erase(id.text);
+        directive_undef();
     } else if (name == "version") {
-        ++suppress_;
+        suppress_.push_back(files_.size());
         const SourceLocation at = peek().location;
         const double v = to_float(parse_expression_for("the language version"), "the language version", at);
-        --suppress_;
+        suppress_.pop_back();
         version_ = v;
         scene_.version = v;
         if (v < 3.5) warn(at, "#version " + format_number(v) + ": photon reads scenes with POV-Ray 3.7's rules");
@@ -45,16 +45,24 @@ inline void Parser::directive(const Token& d) {
             name == "if" ? parse_condition(d, guard) : parse_defined_condition(d, name == "ifndef", guard);
         start_if(d, cond, guard);
     } else if (name == "else" || name == "elseif") {
-        if (conds_.empty() || conds_.back().file_depth != files_.size() || conds_.back().kind != CondKind::if_)
+        if (conds_.empty() || conds_.back().file_depth != files_.size() ||
+            (conds_.back().kind != CondKind::if_ && conds_.back().kind != CondKind::switch_))
             fail(d.location, "`#" + name + "` without a matching `#if`");
+        if (conds_.back().kind == CondKind::switch_) {
+            // Reached while running a #case: POV-Ray falls through into the #else.
+            if (name == "elseif") fail(d.location, "`#elseif` in a `#switch`: expected `#case`, `#range` or `#else`");
+            return;
+        }
         skip_branch(conds_.back().at, "#if", false);
         conds_.pop_back();
     } else if (name == "end") {
         if (conds_.empty() || conds_.back().file_depth != files_.size())
-            fail(d.location, "`#end` without a matching `#if`, `#ifdef`, `#ifndef` or `#while`");
+            fail(d.location, "`#end` without a matching `#if`, `#ifdef`, `#ifndef`, `#while`, `#for`, `#switch` or "
+                             "`#macro`");
         CondFrame frame = conds_.back();
         conds_.pop_back();
         if (frame.kind == CondKind::while_) loop_again(frame);
+        if (frame.kind == CondKind::for_) for_again(frame);
     } else if (name == "while") {
         const Lexer::State start = files_.back().lexer.state();
         bool guard = false;
@@ -63,6 +71,16 @@ inline void Parser::directive(const Token& d) {
         } else {
             skip_branch(d.location, "#while", false);
         }
+    } else if (name == "macro") {
+        directive_macro(d);
+    } else if (name == "switch") {
+        directive_switch(d);
+    } else if (name == "case" || name == "range") {
+        directive_case(d);
+    } else if (name == "break") {
+        directive_break(d);
+    } else if (name == "for") {
+        directive_for(d);
     } else if (name == "warning" || name == "debug" || name == "error") {
         const Token s = next();
         if (s.kind != TokenKind::string) fail_expected("a string in double quotes after `#" + name + "`", s);
@@ -78,15 +96,14 @@ inline void Parser::directive(const Token& d) {
         directive_read(d);
     } else if (name == "write") {
         directive_write(d);
-    } else if (one_of(name, {"macro", "switch", "case", "range", "break", "for",
-                             "statistics", "render"})) {
+    } else if (one_of(name, {"statistics", "render"})) {
         fail(d.location, "`#" + name + "` is not supported by photon's scene language (see docs/scene-language.md)");
     } else {
-        fail(d.location,
-             "unknown directive `#" + name + "`" +
-                 suggest(name, {"declare", "local", "undef", "include", "if", "ifdef", "ifndef", "else", "elseif",
-                                "end", "while", "version", "warning", "error", "debug", "default", "fopen", "fclose",
-                                "read", "write"}));
+        fail(d.location, "unknown directive `#" + name + "`" +
+                             suggest(name, {"declare", "local", "undef", "include", "if", "ifdef", "ifndef", "else",
+                                            "elseif", "end", "while", "for", "switch", "case", "range", "break",
+                                            "macro", "version", "warning", "error", "debug", "default", "fopen",
+                                            "fclose", "read", "write"}));
     }
 }
 
@@ -94,84 +111,202 @@ inline bool Parser::is_reserved(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
            one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
-           one_of(w, other_keywords);
+           one_of(w, other_keywords) || one_of(w, array_keywords);
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
     scopes_.front()[name] = Value{std::move(v), at};
 }
 
+/// The value `name` has in the innermost scope that declares it, following macro parameters
+/// passed by reference; `A[i][j]` (as the token stream writes an element) names an element.
 inline const Value* Parser::lookup(const std::string& name) const {
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
-        auto f = it->find(name);
-        if (f != it->end()) return &f->second;
-    }
+    for (std::size_t i = scopes_.size(); i-- > 0;)
+        if (const Value* v = lookup_in(i, name)) return v;
     return nullptr;
 }
 
+inline const Value* Parser::lookup_in(std::size_t scope, const std::string& name) const {
+    if (scope >= scopes_.size()) return nullptr;
+    std::string base;
+    std::vector<std::size_t> indices;
+    if (split_element(name, base, indices)) {
+        const auto f = scopes_[scope].find(base);
+        const Value* v = f == scopes_[scope].end() ? nullptr : follow(&f->second);
+        const Array* a = v ? std::get_if<Array>(&v->data) : nullptr;
+        if (!a || !a->elements || indices.size() != a->sizes.size()) return nullptr;
+        const std::size_t i = flat_index(*a, indices);
+        return i < a->elements->size() ? (*a->elements)[i].get() : nullptr;
+    }
+    const auto f = scopes_[scope].find(name);
+    return f == scopes_[scope].end() ? nullptr : follow(&f->second);
+}
+
+/// A reference names a scope below its own, so following references ends.
+inline const Value* Parser::follow(const Value* v) const {
+    return v && v->is_reference() ? lookup_in(v->ref_scope, v->ref_name) : v;
+}
+
 inline void Parser::directive_declare(const Token& d, bool local) {
-    const Token id = next();
+    const std::size_t home = files_.size();
+    Token id;
+    {
+        const ReadingName reading(*this);
+        id = next();
+    }
     if (id.kind != TokenKind::identifier) fail_expected("an identifier after `#" + d.text + "`", id);
     if (is_reserved(id.text)) fail(id.location, "cannot #" + d.text + " `" + id.text + "`: it is a keyword");
+    if (const auto m = macros_.find(id.text); m != macros_.end())
+        fail(id.location, "cannot #" + d.text + " `" + id.text + "`: it is a macro (defined at " +
+                              position_in(m->second->at, id.location) + "); `#undef` it first");
     expect_symbol("=", "after `#" + d.text + " " + id.text + "`");
-    auto store = [&](ValueData v) {
-        auto& scope = local ? scopes_.back() : scopes_.front();
-        scope[id.text] = Value{std::move(v), id.location};
-    };
-    const Token t = peek();
-    if (t.kind == TokenKind::identifier) {
-        const std::string& w = t.text;
-        std::optional<ValueData> block;
-        if (w == "texture")
-            block = parse_texture(next(), default_texture_);
-        else if (w == "pigment")
-            block = parse_pigment(next(), Pigment{});
-        else if (w == "finish")
-            block = parse_finish(next(), Finish{});
-        else if (w == "interior")
-            block = parse_interior(next(), Interior{});
-        else if (w == "transform")
-            block = parse_transform_block(next());
-        else if (w == "camera")
-            block = parse_camera(next());
-        else if (w == "spline")
-            block = parse_spline(next());
-        else if (one_of(w, object_keywords)) {
-            block = parse_object(next());
-        } else if (one_of(w, unsupported_objects)) {
-            unsupported_object(t);
-        } else if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
-            next();
-            block = v->data;
-        }
-        if (block) {
-            store(std::move(*block));
-            accept_symbol(";");
-            return;
-        }
-    }
-    if (t.kind == TokenKind::string) {
+    bool needs_semicolon = false;
+    ValueData v = parse_rvalue("the value of `" + id.text + "`", needs_semicolon);
+    const bool semicolon_optional = !needs_semicolon || std::holds_alternative<std::string>(v);
+    assign(id, std::move(v), local);  // before the next token, which may use it (a macro call's argument)
+    // The next directive is not run from here (it runs after this one returns), so that a file
+    // of declarations does not nest one directive inside the other.
+    suppress_.push_back(home);
+    const Token after = peek();
+    suppress_.pop_back();
+    if (after.is_symbol(";")) {
         next();
-        store(t.text);
-        expect_symbol(";", "after the value of `" + id.text + "`");
         return;
     }
-    ++suppress_;
-    const Numeric n = parse_expression_for("the value of `" + id.text + "`");
-    --suppress_;
-    store(n);
-    ++suppress_;
-    const Token after = peek();
-    --suppress_;
-    if (!after.is_symbol(";"))
+    // POV-Ray reads a block or a string without the `;`.
+    if (!semicolon_optional)
         fail(after.location, "expected `;` after the value of `" + id.text + "`, found " + describe(after));
-    next();
+}
+
+/// A declarable block starting at `t` (texture { }, sphere { }, array[3], ...), or a declared
+/// identifier of a block's type; nullopt when `t` starts something else.
+inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
+    if (t.kind != TokenKind::identifier) return std::nullopt;
+    const std::string& w = t.text;
+    if (w == "texture") return parse_texture(next(), default_texture_);
+    if (w == "pigment") return parse_pigment(next(), Pigment{});
+    if (w == "finish") return parse_finish(next(), Finish{});
+    if (w == "interior") return parse_interior(next(), Interior{});
+    if (w == "transform") return parse_transform_block(next());
+    if (w == "camera") return parse_camera(next());
+    if (w == "array") return parse_array(next());
+    if (w == "spline") return parse_spline(next());
+    if (w == "material") {
+        Object holder;
+        const Token kw = next();
+        parse_material(kw, holder);
+        return MaterialBlock{std::move(holder.texture), std::move(holder.interior), kw.location};
+    }
+    if (one_of(w, object_keywords)) return parse_object(next());
+    if (one_of(w, unsupported_objects)) unsupported_object(t);
+    if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
+        next();
+        return v->data;
+    }
+    return std::nullopt;
+}
+
+/// RVALUE: BLOCK | STRING | EXPRESSION — what `#declare NAME =` and a macro argument take.
+/// `needs_semicolon`: a string or an expression, which `#declare` ends with `;`.
+inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semicolon) {
+    const std::size_t home = files_.size();  // before the first token, which may call a macro
+    const Token t = peek();
+    if (auto block = parse_block_value(t)) {
+        needs_semicolon = false;
+        return std::move(*block);
+    }
+    needs_semicolon = true;
+    if (t.kind == TokenKind::string) {
+        next();
+        return t.text;
+    }
+    suppress_.push_back(home);
+    const bool saved = in_vector_;
+    in_vector_ = false;
+    Numeric n = parse_expression_for(what);
+    in_vector_ = saved;
+    suppress_.pop_back();
+    return n;
+}
+
+/// `#declare` changes the identifier where it is visible (a macro's parameter, an include
+/// file's local, the caller's identifier a parameter refers to) and makes a new one global;
+/// `#local` makes or changes one in the innermost scope. These are POV-Ray's rules.
+inline void Parser::assign(const Token& id, ValueData v, bool local) {
+    std::string base;
+    std::vector<std::size_t> indices;
+    const bool element = split_element(id.text, base, indices);
+    std::size_t found = Value::no_ref;
+    for (std::size_t i = scopes_.size(); i-- > 0;)
+        if (scopes_[i].count(base)) {
+            found = i;
+            break;
+        }
+    if (element && found == Value::no_ref) fail(id.location, "undefined array `" + base + "`");
+    if (element && local && found != scopes_.size() - 1)
+        fail(id.location, "cannot use `#local` to assign an element of `" + base +
+                              "`, which is not local here: use `#declare`");
+    std::size_t scope = found;
+    std::string key = base;
+    if (local && found != scopes_.size() - 1) {
+        scope = scopes_.size() - 1;
+    } else if (found == Value::no_ref) {
+        scope = 0;
+    } else {
+        // Follow parameters passed by reference to the identifier they name.
+        for (;;) {
+            const auto f = scopes_[scope].find(key);
+            if (f == scopes_[scope].end() || !f->second.is_reference()) break;
+            const std::size_t s = f->second.ref_scope;
+            key = f->second.ref_name;
+            scope = s;
+            if (key.find('[') != std::string::npos) break;
+        }
+    }
+    if (element) {
+        if (key.find('[') != std::string::npos)
+            fail(id.location, "`" + base + "` refers to an array element, not an array: cannot index it");
+        key += id.text.substr(base.size());
+    }
+    store_at(scope, key, std::move(v), id.location);
+}
+
+inline void Parser::store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at) {
+    std::string base;
+    std::vector<std::size_t> indices;
+    if (!split_element(key, base, indices)) {
+        if (scope == 0) macros_.erase(key);
+        scopes_[scope][key] = Value{std::move(v), at};
+        return;
+    }
+    const auto f = scopes_[scope].find(base);
+    if (f != scopes_[scope].end() && f->second.is_reference()) {
+        const std::size_t to = f->second.ref_scope;
+        store_at(to, f->second.ref_name + key.substr(base.size()), std::move(v), at);
+        return;
+    }
+    Array* a = f == scopes_[scope].end() ? nullptr : std::get_if<Array>(&f->second.data);
+    if (!a) fail(at, "`" + base + "` is not an array");
+    if (indices.size() != a->sizes.size()) fail(at, "`" + key + "`: wrong number of indices");
+    set_element(*a, flat_index(*a, indices), std::move(v), key, at);
+}
+
+inline void Parser::directive_undef() {
+    Token id;
+    {
+        const ReadingName reading(*this);
+        id = next();
+    }
+    if (id.kind != TokenKind::identifier) fail_expected("an identifier after `#undef`", id);
+    if (id.text.find('[') != std::string::npos) fail(id.location, "cannot `#undef` an array element");
+    macros_.erase(id.text);
+    for (auto& scope : scopes_) scope.erase(id.text);
 }
 
 /// `( expression )` after #if, #elseif or #while. Directives are not run inside it (as in
 /// POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's condition.
 inline bool Parser::parse_condition(const Token& d, bool& guard) {
-    ++suppress_;
+    suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
     const bool saved = mentions_photon_version_;
     mentions_photon_version_ = false;
@@ -180,19 +315,23 @@ inline bool Parser::parse_condition(const Token& d, bool& guard) {
     guard = mentions_photon_version_;
     mentions_photon_version_ = saved;
     expect_symbol(")", "to close the condition of `#" + d.text + "`");
-    --suppress_;
+    suppress_.pop_back();
     return v != 0.0;
 }
 
 inline bool Parser::parse_defined_condition(const Token& d, bool negate, bool& guard) {
-    ++suppress_;
+    suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
-    const Token id = next();
+    Token id;
+    {
+        const ReadingName reading(*this);
+        id = next();
+    }
     if (id.kind != TokenKind::identifier) fail_expected("an identifier in `#" + d.text + " ( )`", id);
     expect_symbol(")", "after the identifier of `#" + d.text + "`");
-    --suppress_;
+    suppress_.pop_back();
     guard = id.text == "photon_version";
-    return (lookup(id.text) != nullptr) != negate;
+    return (lookup(id.text) != nullptr || macros_.count(id.text) > 0) != negate;
 }
 
 inline void Parser::start_if(const Token& d, bool cond, bool guard) {

@@ -227,6 +227,7 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         if (w == "image_width") return Numeric::scalar(options_.image_width);
         return Numeric::scalar(options_.image_height);
     }
+    if (w == "dimensions" || w == "dimension_size") return parse_array_function(next());
     if (one_of(w, functions)) return parse_function(next());
     if (one_of(w, object_query_functions)) return parse_object_query(next());
     if (const Value* v = lookup(w)) {

@@ -20,16 +20,6 @@ inline std::string pov_g(double v) {
     return buf;
 }
 
-/// Sets `name` where it is visible (the innermost scope that has it), else declares it globally.
-inline void Parser::assign_identifier(const std::string& name, ValueData v, const SourceLocation& at) {
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-        if (auto found = it->find(name); found != it->end()) {
-            found->second = Value{std::move(v), at};
-            return;
-        }
-    declare_global(name, std::move(v), at);
-}
-
 // FOPEN: #fopen FILE_ID "name" read | write | append
 inline void Parser::directive_fopen(const Token& d) {
     const Token id = next();
@@ -64,7 +54,7 @@ inline void Parser::directive_fopen(const Token& d) {
     }
     (void)d;
     open_files_[id.text] = std::move(f);
-    assign_identifier(id.text, std::string("file \"" + name.text + "\""), id.location);
+    assign(id, std::string("file \"" + name.text + "\""), false);
 }
 
 inline Parser::OpenFile& Parser::open_file(const Token& id, const std::string& directive) {
@@ -88,7 +78,7 @@ inline void Parser::directive_fclose(const Token& d) {
 
 // WRITE: #write ( FILE_ID , ITEM [, ITEM]... )   ITEM: STRING | FLOAT | VECTOR
 inline void Parser::directive_write(const Token& d) {
-    ++suppress_;
+    suppress_.push_back(files_.size());
     expect_symbol("(", "after `#write`");
     const Token id = next();
     OpenFile& f = open_file(id, "write");
@@ -119,7 +109,7 @@ inline void Parser::directive_write(const Token& d) {
         }
     }
     expect_symbol(")", "to close `#write`");
-    --suppress_;
+    suppress_.pop_back();
     (void)d;
     std::string& file = written_files_[f.name];
     if (file.size() + out.size() > options_.max_file_bytes)
@@ -131,7 +121,7 @@ inline void Parser::directive_write(const Token& d) {
 // READ: #read ( FILE_ID , IDENTIFIER [, IDENTIFIER]... ). At the end of the file the file
 // identifier becomes undefined (POV-Ray's `#while (defined(F)) #read (F, V) ... #end`).
 inline void Parser::directive_read(const Token& d) {
-    ++suppress_;
+    suppress_.push_back(files_.size());
     expect_symbol("(", "after `#read`");
     const Token id = next();
     OpenFile& f = open_file(id, "read");
@@ -171,7 +161,7 @@ inline void Parser::directive_read(const Token& d) {
             }
             if (f.pos >= f.text.size()) fail(var.location, "#read: unterminated string in \"" + f.name + "\"");
             ++f.pos;
-            assign_identifier(var.text, s, var.location);
+            assign(var, s, false);
         } else if (c == '<') {
             ++f.pos;
             Numeric n;
@@ -183,16 +173,16 @@ inline void Parser::directive_read(const Token& d) {
             if (f.pos >= f.text.size() || f.text[f.pos] != '>' || n.dim < 2)
                 fail(var.location, "#read: expected a vector `<a, b, ...>` in \"" + f.name + "\"");
             ++f.pos;
-            assign_identifier(var.text, n, var.location);
+            assign(var, n, false);
         } else if (const auto v = number()) {
-            assign_identifier(var.text, Numeric::scalar(*v), var.location);
+            assign(var, Numeric::scalar(*v), false);
         } else {
             fail(var.location, "#read: expected a number, a vector or a string in \"" + f.name + "\", found `" +
                                    std::string(1, c) + "`");
         }
     }
     expect_symbol(")", "to close `#read`");
-    --suppress_;
+    suppress_.pop_back();
     (void)d;
     // POV-Ray undefines the file as soon as its last item is read.
     while (f.pos < f.text.size() && (std::isspace(static_cast<unsigned char>(f.text[f.pos])) || f.text[f.pos] == ','))

@@ -83,6 +83,8 @@ inline constexpr std::string_view object_query_functions[] = {"trace", "min_exte
 /// Kinds of `spline { }` (parser/splines.hpp).
 inline constexpr std::string_view spline_keywords[] = {"spline", "linear_spline", "quadratic_spline", "cubic_spline",
                                                       "natural_spline"};
+/// Arrays' keywords (parser/arrays.hpp); `dimensions` and `dimension_size` are functions.
+inline constexpr std::string_view array_keywords[] = {"array", "mixed", "dimensions", "dimension_size"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",

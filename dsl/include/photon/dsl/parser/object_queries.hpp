@@ -43,13 +43,7 @@ inline Numeric Parser::parse_object_query(const Token& f) {
         result = Numeric::vector(hit ? hit->point : Vector3(0.0));
         if (normal_id) {
             const Numeric n = Numeric::vector(hit ? hit->normal : Vector3(0.0));
-            Value* existing = nullptr;
-            for (auto it = scopes_.rbegin(); it != scopes_.rend() && !existing; ++it)
-                if (auto found = it->find(normal_id->text); found != it->end()) existing = &found->second;
-            if (existing)
-                *existing = Value{n, normal_id->location};
-            else
-                declare_global(normal_id->text, n, normal_id->location);
+            assign(*normal_id, n, false);  // as `#declare`
         }
     } else {
         expect_symbol(")", "to close the arguments of `" + w + "`");

@@ -182,6 +182,10 @@ inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {
 inline void Parser::parse_material(const Token& kw, Object& obj) {
     const Nest nest(*this, kw.location);
     open_block(kw);
+    if (MaterialBlock m; take_identifier(m, "a material identifier")) {
+        if (m.texture) obj.texture = m.texture;
+        if (m.interior) obj.interior = m.interior;
+    }
     for (;;) {
         const Token t = peek();
         if (t.is_identifier("texture"))

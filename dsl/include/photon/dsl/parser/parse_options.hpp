@@ -63,6 +63,10 @@ struct ParseOptions {
     std::uint64_t max_tokens = 200'000'000;
     std::uint64_t max_loop_iterations = 1'000'000;  ///< per #while loop
     std::size_t max_primitives = 10'000'000;        ///< objects and mesh triangles in the scene
+    unsigned max_macro_depth = 256;                 ///< macro calls running inside each other (recursion)
+    /// Array elements made over the whole read (each array's size when it is made, or copied
+    /// on a write to a shared copy): bounds the memory arrays can take.
+    std::uint64_t max_array_elements = std::uint64_t(1) << 24;
 };
 
 /// Where POV-Ray's standard include files (colors.inc, textures.inc, ...) are looked for after

@@ -54,18 +54,49 @@ public:
     }
 
 private:
+    /// `#macro NAME (PARAMS) body #end`: where the body is, to be read again at each call.
+    struct Macro {
+        std::string name;
+        std::vector<std::string> params;
+        std::vector<bool> optional;  ///< POV-Ray 3.8's `optional` parameters may be left out
+        std::shared_ptr<const SourceFile> file;
+        std::filesystem::path path;
+        Lexer::State body{};
+        std::size_t body_end = 0;  ///< where the closing `#end` starts
+        SourceLocation at;
+    };
     struct FileFrame {
         Lexer lexer;
         std::filesystem::path path;  ///< canonical, for include loops
+        /// A macro call reads the macro's body as a frame of its own, up to body_end.
+        std::shared_ptr<const Macro> macro;
+        SourceLocation called_at;
     };
-    enum class CondKind { if_, while_ };
+    enum class CondKind { if_, while_, for_, switch_ };
     struct CondFrame {
+        CondFrame(CondKind k, std::size_t depth, SourceLocation opened, Lexer::State start = {}, bool guard = false,
+                  std::uint64_t done = 0)
+            : kind(k), file_depth(depth), at(std::move(opened)), loop_start(start), photon_guard(guard),
+              iterations(done) {}
         CondKind kind;
         std::size_t file_depth;
         SourceLocation at;
         Lexer::State loop_start{};
         bool photon_guard = false;
         std::uint64_t iterations = 0;
+        std::string loop_variable;             ///< #for
+        double loop_end = 0, loop_step = 1;    ///< #for
+        double switch_value = 0;               ///< #switch
+        bool case_running = false;             ///< #switch: inside a matching #case, falling through
+    };
+    /// Raises reading_name_ for a scope: the identifiers read are names (`#declare NAME`,
+    /// `#ifdef (NAME)`), so macros are not called and unset array elements are no error.
+    struct ReadingName {
+        Parser& p;
+        explicit ReadingName(Parser& parser) : p(parser) { ++p.reading_name_; }
+        ~ReadingName() { --p.reading_name_; }
+        ReadingName(const ReadingName&) = delete;
+        ReadingName& operator=(const ReadingName&) = delete;
     };
     struct Nest {
         Parser& p;
@@ -95,6 +126,7 @@ private:
     Token raw_token();
     static std::string position(const SourceLocation& at);
     std::string position_in(const SourceLocation& at, const SourceLocation& from) const;
+    bool suppressed() const;
     const Token& peek();
     Token next();
     bool accept_symbol(std::string_view s);
@@ -109,7 +141,14 @@ private:
     bool is_reserved(std::string_view w) const;
     void declare_global(const std::string& name, ValueData v, const SourceLocation& at);
     const Value* lookup(const std::string& name) const;
+    const Value* lookup_in(std::size_t scope, const std::string& name) const;
+    const Value* follow(const Value* v) const;
     void directive_declare(const Token& d, bool local);
+    std::optional<ValueData> parse_block_value(const Token& t);
+    ValueData parse_rvalue(const std::string& what, bool& needs_semicolon);
+    void assign(const Token& id, ValueData v, bool local);
+    void store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at);
+    void directive_undef();
     bool parse_condition(const Token& d, bool& guard);
     bool parse_defined_condition(const Token& d, bool negate, bool& guard);
     void start_if(const Token& d, bool cond, bool guard);
@@ -117,6 +156,33 @@ private:
     void loop_again(CondFrame frame);
     bool in_photon_guard() const;
     void directive_default(const Token& d);
+
+    // macros.hpp
+    void directive_macro(const Token& d);
+    bool try_invoke_macro(const Token& t);
+    void bind_argument(const Macro& m, std::size_t i, std::unordered_map<std::string, Value>& scope);
+    void return_from_macro();
+    std::string macro_trace() const;
+
+    // control_flow.hpp
+    void directive_switch(const Token& d);
+    void directive_case(const Token& d);
+    bool case_matches(const Token& d);
+    void skip_to_case(const Token& d);
+    void directive_break(const Token& d);
+    void skip_to_end_of(std::size_t frame);
+    void directive_for(const Token& d);
+    void for_again(CondFrame frame);
+
+    // arrays.hpp
+    Array parse_array(const Token& kw);
+    void parse_array_initialiser(Array& a, std::size_t dim, std::size_t& next_index, const Token& kw);
+    void set_element(Array& a, std::size_t index, ValueData v, const std::string& name, const SourceLocation& at);
+    void expand_array_element(Token& t);
+    static bool split_element(const std::string& name, std::string& base, std::vector<std::size_t>& indices);
+    static std::size_t flat_index(const Array& a, const std::vector<std::size_t>& indices);
+    Numeric parse_array_function(const Token& f);
+    [[noreturn]] void fail_unset_element(const Token& t, const Value& array);
 
     // expressions.hpp
     Numeric parse_expression_for(const std::string& what);
@@ -138,7 +204,6 @@ private:
         std::size_t pos = 0;  ///< next character to #read
         bool writing = false;
     };
-    void assign_identifier(const std::string& name, ValueData v, const SourceLocation& at);
     void directive_fopen(const Token& d);
     void directive_fclose(const Token& d);
     void directive_write(const Token& d);
@@ -215,6 +280,10 @@ private:
     std::vector<std::unordered_map<std::string, Value>> scopes_;
     std::vector<CondFrame> conds_;
     std::optional<Token> lookahead_;
+    std::unordered_map<std::string, std::shared_ptr<const Macro>> macros_;
+    unsigned macro_depth_ = 0;
+    int reading_name_ = 0;
+    std::uint64_t array_elements_ = 0;  ///< array elements made so far, for the bound
     Texture default_texture_;
     std::set<std::string> warned_;
     std::string expecting_;
@@ -222,7 +291,9 @@ private:
     std::uint64_t tokens_ = 0;
     std::size_t statements_ = 0;
     unsigned depth_ = 0;
-    int suppress_ = 0;
+    /// Where directives are not run: the file depth of each condition or value being read.
+    /// Only that frame's directives wait; a macro called there runs its body's directives.
+    std::vector<std::size_t> suppress_;
     bool in_vector_ = false;  ///< comparisons need parentheses: in a vector or a block's parameter
     bool mentions_photon_version_ = false;
     std::map<std::string, OpenFile> open_files_;        ///< by file identifier

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Token stream: the files being read, `#include`, tokens with one of lookahead, and blocks.
+// Token stream: the files being read (and macro bodies, read as frames of their own), `#include`,
+// tokens with one of lookahead, and blocks. Macro calls and array elements are resolved here, as
+// POV-Ray's tokenizer does, so they may come wherever a token may.
 
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
 
-inline void Parser::fail(const SourceLocation& at, std::string message) const { throw Error(at, std::move(message)); }
+inline void Parser::fail(const SourceLocation& at, std::string message) const {
+    throw Error(at, std::move(message) + macro_trace());
+}
 
 inline void Parser::fail_expected(const std::string& expected, const Token& found, const std::string& hint) const {
     fail(found.location, "expected " + expected + ", found " + describe(found) + hint);
@@ -96,7 +100,7 @@ inline void Parser::directive_include(const Token& d) {
         display = rel.lexically_normal().string();
     auto file = load(found, display, s.location);
     scene_.files.push_back(file);
-    files_.push_back({Lexer(file), canonical});
+    files_.push_back({Lexer(file), canonical, nullptr, {}});
     scopes_.emplace_back();
 }
 
@@ -114,13 +118,13 @@ inline void Parser::push_included_text(const Token& s, std::string text, const s
     if (text.size() > options_.max_file_bytes) fail(s.location, too_large_message(text.size()));
     auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(text)});
     scene_.files.push_back(file);
-    files_.push_back({Lexer(file), key});
+    files_.push_back({Lexer(file), key, nullptr, {}});
     scopes_.emplace_back();
 }
 
 inline void Parser::check_include_loop(const std::filesystem::path& canonical, const Token& s) const {
     for (std::size_t i = 0; i < files_.size(); ++i)
-        if (files_[i].path == canonical) {
+        if (!files_[i].macro && files_[i].path == canonical) {
             std::string chain;
             for (std::size_t j = i; j < files_.size(); ++j) chain += files_[j].lexer.file()->name + " includes ";
             fail(s.location, "include loop: " + chain + "\"" + s.text + "\" again");
@@ -134,12 +138,16 @@ inline Token Parser::raw_token() {
             fail({lexer.file(), lexer.state().line, lexer.state().column},
                  "the scene is too long: more than " + std::to_string(options_.max_tokens) + " tokens read");
         }
+        if (const FileFrame& f = files_.back(); f.macro && f.lexer.state().pos >= f.macro->body_end) {
+            return_from_macro();
+            continue;
+        }
         Token t = files_.back().lexer.next();
         if (t.kind != TokenKind::end_of_file) return t;
         if (!conds_.empty() && conds_.back().file_depth == files_.size()) {
             const CondFrame& c = conds_.back();
-            fail(t.location, "expected `#end` to close the `" +
-                                 std::string(c.kind == CondKind::if_ ? "#if" : "#while") + "` opened at " +
+            const char* kinds[] = {"#if", "#while", "#for", "#switch"};
+            fail(t.location, "expected `#end` to close the `" + std::string(kinds[int(c.kind)]) + "` opened at " +
                                  position(c.at) + ", found end of file");
         }
         if (files_.size() == 1) return t;
@@ -157,16 +165,25 @@ inline std::string Parser::position_in(const SourceLocation& at, const SourceLoc
     return at.str();
 }
 
+/// Directives are not run while reading a condition or a declared value, unless they are in the
+/// body of a macro called there.
+inline bool Parser::suppressed() const { return !suppress_.empty() && suppress_.back() == files_.size(); }
+
 inline const Token& Parser::peek() {
     for (;;) {
         if (lookahead_) {
-            if (lookahead_->kind != TokenKind::directive || suppress_ > 0) return *lookahead_;
+            if (lookahead_->kind != TokenKind::directive || suppressed()) return *lookahead_;
             Token d = std::move(*lookahead_);
             lookahead_.reset();
             directive(d);
             continue;
         }
-        lookahead_ = raw_token();
+        Token t = raw_token();
+        if (t.kind == TokenKind::identifier) {
+            if (reading_name_ == 0 && try_invoke_macro(t)) continue;
+            expand_array_element(t);
+        }
+        lookahead_ = std::move(t);
     }
 }
 

@@ -74,6 +74,7 @@ inline bool Parser::starts_expression(const Token& t) const {
     if (one_of(t.text, constants) || one_of(t.text, functions) || one_of(t.text, object_query_functions) ||
         one_of(t.text, color_keywords))
         return true;
+    if (t.text == "dimensions" || t.text == "dimension_size") return true;
     const Value* v = lookup(t.text);
     return v && (std::holds_alternative<Numeric>(v->data) || std::holds_alternative<Spline>(v->data));
 }
