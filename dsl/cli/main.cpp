@@ -336,6 +336,8 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     return partial ? exit_interrupted : EXIT_SUCCESS;
 }
 
+/// `photon check` builds the scene as `render` does, so the build step's errors (a mesh file
+/// missing or broken, at its name in the scene) are reported by check too.
 int run_check(SceneOptions& so) {
     const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
     dsl::BuildOptions bo;
@@ -348,7 +350,7 @@ int run_check(SceneOptions& so) {
 
 int run_export(SceneOptions& so, const std::string& output) {
     const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
-    const std::string text = dsl::export_pov(desc);
+    const std::string text = dsl::export_pov(desc, so.sink());
     if (output.empty() || output == "-") {
         std::cout << text;
     } else {
