@@ -270,7 +270,8 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     // POV-Ray's image_width and image_height are the command line's size when it gives one.
     auto size = [&](const char* key, unsigned otherwise) {
         const auto it = bo.overrides.find(key);
-        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second)) return otherwise;
+        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second))
+            return otherwise;  // build() reports it
         return unsigned(std::get<std::uint64_t>(it->second));
     };
 

@@ -3,8 +3,9 @@
 // From a SceneDescription to the library's objects: DefaultScene<S>, PinholeCamera<S> and
 // RenderSettings, reading the mesh files the scene names (mesh_files.hpp). This is where
 // POV-Ray's meaning becomes physics: the light-unit rule (a light's colour and fade give its
-// radiant intensity), the finish-to-reflectance rule, the camera in POV-Ray's order of application. Library constructors that reject a value
-// (std::invalid_argument) are reported as dsl::Error at the place the value was written.
+// radiant intensity), the finish-to-reflectance rule, the camera in POV-Ray's order of
+// application. Library constructors that reject a value (std::invalid_argument) are reported as
+// dsl::Error at the place the value was written.
 
 #include <cmath>
 #include <functional>
