@@ -130,10 +130,8 @@ Render render_class(const std::string& name, RenderMode mode, const Measurement&
     const unsigned width = m.width * supersampling, height = m.height * supersampling;
     dsl::ParseOptions po;
     po.image_width = width, po.image_height = height;
-    dsl::SettingsOverrides o;
-    o.width = width, o.height = height, o.mode = mode;
     dsl::BuildOptions bo;
-    bo.overrides = o;
+    bo.overrides = {{"width", width}, {"height", height}, {"mode", std::string(dsl::render_mode_name(mode))}};
     auto built = dsl::load_scene<float>(m.classes_dir / (name + ".pov"), po, bo);
     adjust(built.settings);
     const auto result = photon::render(built.scene, built.camera, built.settings);

@@ -272,7 +272,8 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     // POV-Ray's image_width and image_height are the command line's size when it gives one.
     auto size = [&](const char* key, unsigned otherwise) {
         const auto it = bo.overrides.find(key);
-        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second)) return otherwise;
+        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second))
+            return otherwise;  // build() reports it
         return unsigned(std::get<std::uint64_t>(it->second));
     };
 
@@ -338,6 +339,8 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     return partial ? exit_interrupted : EXIT_SUCCESS;
 }
 
+/// `photon check` builds the scene as `render` does, so the build step's errors (a mesh file
+/// missing or broken, at its name in the scene) are reported by check too.
 int run_check(SceneOptions& so) {
     const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
     dsl::BuildOptions bo;
@@ -350,7 +353,7 @@ int run_check(SceneOptions& so) {
 
 int run_export(SceneOptions& so, const std::string& output) {
     const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
-    const std::string text = dsl::export_pov(desc);
+    const std::string text = dsl::export_pov(desc, so.sink());
     if (output.empty() || output == "-") {
         std::cout << text;
     } else {

@@ -2,7 +2,7 @@
 #pragma once
 // The `photon render` options of the render settings, one per entry of the settings table
 // (photon/dsl/settings_table.hpp) that has a flag. CLI11 reads each value as its kind (a whole
-// number, a real, a mode name); the bounds are checked when the overrides are applied
+// number, a real, a mode name: a usage error otherwise); the bounds are checked when the overrides are applied
 // (dsl::apply_setting), which names the option: "--spp: samples per pixel must be from 1 to
 // 1000000, found 0".
 
@@ -29,8 +29,7 @@ public:
             const std::string flag(s.flag), help(s.help);
             CLI::Option* option = nullptr;
             if (s.kind == dsl::SettingKind::integer) {
-                // CLI11 would read -1 as 2^64 - 1: a sign is a usage error, as for an unsigned option.
-                option = cmd.add_option(flag, integers_[i], help)->check(CLI::NonNegativeNumber);
+                option = cmd.add_option(flag, integers_[i], help);
             } else if (s.kind == dsl::SettingKind::real) {
                 option = cmd.add_option(flag, reals_[i], help);
             } else {
@@ -48,7 +47,10 @@ public:
         dsl::SettingsOverrides o;
         for (std::size_t i = 0; i < std::size(dsl::render_settings_table); ++i) {
             const std::string key(dsl::render_settings_table[i].key);
-            if (integers_[i]) o[key] = *integers_[i];
+            // Read signed (an unsigned option would take -1 as 2^64 - 1), so that a negative value is
+            // reported with the setting's bounds.
+            if (integers_[i]) o[key] = *integers_[i] >= 0 ? dsl::SettingValue(std::uint64_t(*integers_[i]))
+                                                          : dsl::SettingValue(double(*integers_[i]));
             if (reals_[i]) o[key] = *reals_[i];
             if (names_[i]) o[key] = *names_[i];
         }
@@ -57,7 +59,7 @@ public:
 
 private:
     static constexpr std::size_t n = std::size(dsl::render_settings_table);
-    std::array<std::optional<std::uint64_t>, n> integers_{};
+    std::array<std::optional<std::int64_t>, n> integers_{};
     std::array<std::optional<double>, n> reals_{};
     std::array<std::optional<std::string>, n> names_{};
 };

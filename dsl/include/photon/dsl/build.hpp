@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // From a SceneDescription to the library's objects: DefaultScene<S>, PinholeCamera<S> and
-// RenderSettings. This is where POV-Ray's meaning becomes physics: the light-unit rule (a
-// light's colour and fade give its radiant intensity), the finish-to-reflectance rule, the camera
-// in POV-Ray's order of application. Library constructors that reject a value
-// (std::invalid_argument) are reported as dsl::Error at the place the value was written.
+// RenderSettings, reading the mesh files the scene names (mesh_files.hpp). This is where
+// POV-Ray's meaning becomes physics: the light-unit rule (a light's colour and fade give its
+// radiant intensity), the finish-to-reflectance rule, the camera in POV-Ray's order of
+// application. Library constructors that reject a value (std::invalid_argument) are reported as
+// dsl::Error at the place the value was written.
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,7 @@
 
 #include "description.hpp"
 #include "diagnostics.hpp"
+#include "mesh_files.hpp"
 #include "settings_table.hpp"
 #include "value.hpp"
 
@@ -33,6 +35,9 @@ using SettingsOverrides = std::map<std::string, SettingValue, std::less<>>;
 struct BuildOptions {
     SettingsOverrides overrides;
     DiagnosticSink diagnostics;
+    /// Objects and mesh triangles in the scene, the mesh files' triangles counted for every use
+    /// (the parser bounds the rest with ParseOptions::max_primitives, the same default).
+    std::size_t max_primitives = 10'000'000;
 };
 
 template <Scalar S>
@@ -335,12 +340,25 @@ inline bool keeps_axes(const glm::dmat3& m) {
 template <Scalar S>
 class Builder {
 public:
-    Builder(const SceneDescription& desc, Warnings& warn) : desc_(desc), warn_(warn) {}
+    Builder(const SceneDescription& desc, Warnings& warn, std::size_t max_primitives)
+        : desc_(desc), warn_(warn), max_primitives_(max_primitives),
+          mesh_files_([&warn](const SourceLocation& at, const std::string& m) { warn(at, m); }) {}
 
     void add_all(DefaultScene<S>& scene) {
         scene_ = &scene;
         for (const Object& o : desc_.objects) add(o, Inherited{});
         if (scene.lights().empty()) warn_(desc_.at, "the scene has no light_source: the image will be black");
+    }
+
+    /// Reads every mesh file the scene names, first, so that a missing one is the build's first
+    /// message (as when the parser read them).
+    void read_files() {
+        std::function<void(const Object&)> visit = [&](const Object& o) {
+            if (const auto* m = std::get_if<MeshShape>(&o.shape); m && m->file) (void)mesh_files_.triangles(*m->file);
+            if (const auto* u = std::get_if<UnionShape>(&o.shape))
+                for (const auto& child : u->children) visit(*child);
+        };
+        for (const Object& o : desc_.objects) visit(o);
     }
 
     /// Where each object of the scene was written (a mesh or a union's objects share one place).
@@ -413,14 +431,23 @@ private:
                     m, opt);
     }
     void add_shape(const MeshShape& mesh, const Transform& t, MaterialId m, ObjectOptions opt) {
+        const MeshTriangles* from_file = mesh.file ? &mesh_files_.triangles(*mesh.file) : nullptr;
+        const std::size_t count = mesh.triangles->size() + (from_file ? from_file->size() : 0);
+        file_triangles_ += from_file ? from_file->size() : 0;
+        if (from_file && file_triangles_ > max_primitives_)
+            throw Error(mesh.file->at, "the scene is too large: more than " + std::to_string(max_primitives_) +
+                                           " objects and triangles");
         std::vector<Vec3<S>> positions;
         std::vector<typename TriangleMesh<S>::Index> indices;
-        positions.reserve(mesh.triangles->size() * 3);
-        indices.reserve(mesh.triangles->size());
-        for (const auto& tri : *mesh.triangles) {
-            const auto base = std::uint32_t(positions.size());
-            for (const Vector3& v : tri) positions.push_back(Vec3<S>(t.point(v)));
-            indices.push_back({base, base + 1, base + 2});
+        positions.reserve(count * 3);
+        indices.reserve(count);
+        for (const MeshTriangles* part : {from_file, mesh.triangles.get()}) {
+            if (!part) continue;
+            for (const auto& tri : *part) {
+                const auto base = std::uint32_t(positions.size());
+                for (const Vector3& v : tri) positions.push_back(Vec3<S>(t.point(v)));
+                indices.push_back({base, base + 1, base + 2});
+            }
         }
         scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices)), m, opt);
     }
@@ -517,6 +544,9 @@ private:
     DefaultScene<S>* scene_ = nullptr;
     std::vector<std::pair<MaterialParams<S>, MaterialId>> materials_;
     std::vector<SourceLocation> object_at_;
+    std::size_t max_primitives_;
+    std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
+    MeshFiles mesh_files_;
 };
 
 }  // namespace detail
@@ -526,6 +556,8 @@ private:
 template <Scalar S>
 [[nodiscard]] BuiltScene<S> build(const SceneDescription& desc, const BuildOptions& options = {}) {
     Warnings warn(options.diagnostics);
+    detail::Builder<S> builder(desc, warn, options.max_primitives);
+    builder.read_files();
     RenderSettings settings = render_settings(desc, options.overrides, warn);
     CameraDescription cam;
     if (desc.camera)
@@ -540,7 +572,6 @@ template <Scalar S>
         throw Error(cam.at.known() ? cam.at : desc.at, e.what());
     }
     DefaultScene<S> scene;
-    detail::Builder<S> builder(desc, warn);
     builder.add_all(scene);
     scene.commit();
     // Said here, where the object's place in the file is known, for `check` and `render` alike

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -192,8 +193,16 @@ struct PlaneShape {
 struct TriangleShape {
     std::array<Vector3, 3> vertices{};
 };
+/// An OBJ file named in a mesh (`mesh { obj "file.obj" }`). The parser only records it; the build
+/// step reads it (mesh_files.hpp), so that reading a scene never opens a mesh file.
+struct MeshFile {
+    std::filesystem::path path;  ///< resolved against the directory of the scene file that names it
+    std::string written;         ///< the name as the scene writes it
+    SourceLocation at;           ///< where the name is written
+};
 struct MeshShape {
-    std::shared_ptr<const std::vector<std::array<Vector3, 3>>> triangles;
+    std::shared_ptr<const std::vector<std::array<Vector3, 3>>> triangles;  ///< written in the mesh
+    std::optional<MeshFile> file;  ///< an OBJ file whose triangles come before them
 };
 /// `union` (or `merge`): the children, each with its own modifiers. Children are shared, not
 /// copied, when a declared object is used again (`object { Name }`), so repeated use stays cheap.

@@ -9,10 +9,13 @@
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <photon/version.hpp>
 
 #include "description.hpp"
+#include "diagnostics.hpp"
+#include "mesh_files.hpp"
 #include "settings_table.hpp"
 #include "value.hpp"
 
@@ -22,6 +25,11 @@ namespace detail {
 
 class PovWriter {
 public:
+    explicit PovWriter(DiagnosticSink sink)
+        : mesh_files_([sink](const SourceLocation& at, const std::string& m) {
+              if (sink) sink({Severity::warning, at, m});
+          }) {}
+
     std::string write(const SceneDescription& d) {
         out_ << "// Written by `photon export-pov` (photon " << PHOTON_VERSION_MAJOR << '.' << PHOTON_VERSION_MINOR
              << '.' << PHOTON_VERSION_PATCH << ") from " << d.at.file_name() << ".\n"
@@ -216,9 +224,14 @@ private:
                  << '\n';
         } else if (const auto* m = std::get_if<MeshShape>(&o.shape)) {
             out_ << "mesh {\n";
-            for (const auto& tri : *m->triangles) {
-                indent(level + 1);
-                out_ << "triangle { " << vec(tri[0]) << ", " << vec(tri[1]) << ", " << vec(tri[2]) << " }\n";
+            // POV-Ray reads no OBJ files: the file's triangles are written out, before the mesh's own.
+            for (const MeshTriangles* part :
+                 {m->file ? &mesh_files_.triangles(*m->file) : nullptr, m->triangles.get()}) {
+                if (!part) continue;
+                for (const auto& tri : *part) {
+                    indent(level + 1);
+                    out_ << "triangle { " << vec(tri[0]) << ", " << vec(tri[1]) << ", " << vec(tri[2]) << " }\n";
+                }
             }
         } else {
             const auto& u = std::get<UnionShape>(o.shape);
@@ -233,11 +246,15 @@ private:
     }
 
     std::ostringstream out_;
+    MeshFiles mesh_files_;
 };
 
 }  // namespace detail
 
-/// `desc` as a POV-Ray 3.7 scene file that POV-Ray and photon read alike.
-[[nodiscard]] inline std::string export_pov(const SceneDescription& desc) { return detail::PovWriter().write(desc); }
+/// `desc` as a POV-Ray 3.7 scene file that POV-Ray and photon read alike. Reads the mesh files the
+/// scene names (throws dsl::Error as build() does); their warnings go to `diagnostics`.
+[[nodiscard]] inline std::string export_pov(const SceneDescription& desc, DiagnosticSink diagnostics = {}) {
+    return detail::PovWriter(std::move(diagnostics)).write(desc);
+}
 
 }  // namespace photon::dsl

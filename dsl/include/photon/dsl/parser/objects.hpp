@@ -2,10 +2,6 @@
 #pragma once
 // Objects: the shapes, union/merge, `object { }`, meshes and the object modifiers.
 
-#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ  // set by the CMake target photon::obj
-#include <photon/io/obj_mesh.hpp>
-#endif
-
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -62,7 +58,8 @@ inline Object Parser::parse_object(const Token& kw) {
         obj.shape = parse_triangle_corners(kw);
     } else if (w == "mesh") {
         auto tris = std::make_shared<std::vector<std::array<Vector3, 3>>>();
-        if (peek().is_identifier("obj")) read_obj_mesh(next(), *tris);
+        std::optional<MeshFile> file;
+        if (peek().is_identifier("obj")) file = parse_mesh_file(next());
         while (peek().is_identifier("triangle") || peek().is_identifier("smooth_triangle")) {
             const Token tk = next();
             const Nest inner(*this, tk.location);
@@ -75,9 +72,9 @@ inline Object Parser::parse_object(const Token& kw) {
                 fail(tk.location, "the scene is too large: more than " + std::to_string(options_.max_primitives) +
                                       " objects and triangles");
         }
-        if (tris->empty()) fail_expected("`triangle` or `obj \"file.obj\"` in `mesh`", peek());
-        obj.primitives = tris->size();
-        obj.shape = MeshShape{std::move(tris)};
+        if (tris->empty() && !file) fail_expected("`triangle` or `obj \"file.obj\"` in `mesh`", peek());
+        obj.primitives = std::max<std::size_t>(1, tris->size());  // the file's triangles are counted when built
+        obj.shape = MeshShape{std::move(tris), std::move(file)};
     } else if (w == "union" || w == "merge") {
         UnionShape u;
         u.merge = w == "merge";
@@ -128,40 +125,14 @@ inline Object Parser::parse_object(const Token& kw) {
     return obj;
 }
 
-/// `obj "file.obj"` in a mesh: the file's triangles, its path relative to the scene file
-/// that names it. Needs photon::obj (tinyobjloader); errors point at the file name.
-inline void Parser::read_obj_mesh(const Token& kw, std::vector<std::array<Vector3, 3>>& tris) {
+// MESH_FILE: obj "file.obj"
+// Recorded with its path relative to the scene file that names it; the build step reads it
+// (mesh_files.hpp), so reading a scene never opens a mesh file.
+inline MeshFile Parser::parse_mesh_file(const Token& kw) {
     const Token s = next();
-    if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `obj`", s);
-#if defined(PHOTON_HAS_OBJ) && PHOTON_HAS_OBJ
-    namespace fs = std::filesystem;
-    const fs::path name(s.text);
-    const fs::path path = name.is_absolute() ? name : files_.back().path.parent_path() / name;
-    std::error_code ec;
-    std::string display = path.lexically_normal().string();
-    if (const auto rel = fs::proximate(path, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
-        display = rel.lexically_normal().string();
-    if (!fs::is_regular_file(path, ec))
-        fail(s.location, "cannot find the mesh file \"" + s.text + "\" (looked for " + display + ")");
-    ObjTriangles<double> obj;
-    try {
-        obj = photon::detail::parse_obj_file<double>(path, display);
-    } catch (const ObjError& e) {
-        fail(s.location, std::string("cannot read the mesh: ") + e.what());
-    }
-    for (const std::string& w : obj.warnings) warn(s.location, display + ": " + w);
-    if (obj.triangles.empty()) fail(s.location, "the mesh file " + display + " has no faces");
-    if (obj.triangles.size() > options_.max_primitives)
-        fail(s.location,
-             "the scene is too large: more than " + std::to_string(options_.max_primitives) + " objects and triangles");
-    tris.reserve(obj.triangles.size());
-    for (const auto& t : obj.triangles) tris.push_back({obj.positions[t[0]], obj.positions[t[1]], obj.positions[t[2]]});
-    (void)kw;
-#else
-    (void)tris;
-    fail(kw.location, "this program was built without OBJ support: `mesh { obj \"" + s.text +
-                          "\" }` needs photon::obj (tinyobjloader)");
-#endif
+    if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `" + kw.text + "`", s);
+    const std::filesystem::path name(s.text);
+    return MeshFile{name.is_absolute() ? name : files_.back().path.parent_path() / name, s.text, s.location};
 }
 
 inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {

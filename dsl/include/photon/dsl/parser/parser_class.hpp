@@ -253,7 +253,7 @@ private:
     Texture& ensure_texture(Object& obj);
     void add_primitives(Object& obj, std::size_t n, const SourceLocation& at);
     Object parse_object(const Token& kw);
-    void read_obj_mesh(const Token& kw, std::vector<std::array<Vector3, 3>>& tris);
+    MeshFile parse_mesh_file(const Token& kw);
     TriangleShape parse_triangle_corners(const Token& kw);
     void parse_material(const Token& kw, Object& obj);
     void parse_modifiers(const Token& kw, Object& obj);

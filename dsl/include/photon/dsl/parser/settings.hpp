@@ -91,7 +91,8 @@ inline void Parser::parse_table_setting(const RenderSetting& s, const Token& kw)
         if (!mode || !mode->in_scene) {
             std::vector<std::string> names;  // each mode once, as photon writes it
             for (const RenderModeName& n : render_mode_names)
-                if (n.in_scene && render_mode_name(n.mode) == n.name) names.push_back(std::string("`").append(n.name).append("`"));
+                if (n.in_scene && render_mode_name(n.mode) == n.name)
+                    names.push_back(std::string("`").append(n.name).append("`"));
             std::string list;
             for (std::size_t i = 0; i < names.size(); ++i)
                 list.append(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ").append(names[i]);
