@@ -2,12 +2,13 @@
 #pragma once
 // Values of POV-Ray's expressions and declarations: numbers, vectors and colours (one numeric
 // type of 0 to 5 components, as POV-Ray promotes between them), strings, and the declarable
-// blocks (pigment, finish, interior, texture, transform, object, camera).
+// blocks (pigment, finish, interior, texture, transform, object, camera), and user functions.
 
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -64,8 +65,10 @@ struct Numeric {
     return s + ">";
 }
 
-using ValueData =
-    std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object, CameraDescription>;
+struct UserFunction;  // user_function.hpp
+
+using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
+                               CameraDescription, std::shared_ptr<const UserFunction>>;
 
 /// A declared identifier's value and where it was declared.
 struct Value {
@@ -94,8 +97,10 @@ struct Value {
             return "a transform";
         case 7:
             return std::holds_alternative<LightSource>(std::get<Object>(v).shape) ? "a light_source" : "an object";
-        default:
+        case 8:
             return "a camera";
+        default:
+            return "a function";
     }
 }
 

@@ -57,8 +57,7 @@ inline void Parser::directive(const Token& d) {
             skip_branch(d.location, "#while", false);
         }
     } else if (name == "warning" || name == "debug" || name == "error") {
-        const Token s = next();
-        if (s.kind != TokenKind::string) fail_expected("a string in double quotes after `#" + name + "`", s);
+        const Token s = parse_string_token("a string after `#" + name + "`");
         if (name == "error") fail(d.location, "#error: " + s.text);
         if (name == "warning") warn(d.location, "#warning: " + s.text);
     } else if (name == "default") {
@@ -78,7 +77,7 @@ inline bool Parser::is_reserved(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
            one_of(w, constants) || one_of(w, functions) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
-           one_of(w, other_keywords);
+           one_of(w, other_keywords) || one_of(w, string_functions) || one_of(w, function_words);
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -118,11 +117,19 @@ inline void Parser::directive_declare(const Token& d, bool local) {
             block = parse_transform_block(next());
         else if (w == "camera")
             block = parse_camera(next());
+        else if (w == "function")
+            block = parse_user_function(next(), id.text);
         else if (one_of(w, object_keywords)) {
             block = parse_object(next());
         } else if (one_of(w, unsupported_objects)) {
             unsupported_object(t);
-        } else if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
+        } else if (const Value* v = lookup(w); v && std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data)) {
+            const Token f = next();  // `#declare G = F` copies the function, `F(...)` calls it
+            if (peek().is_symbol("("))
+                pending_call_ = f;
+            else
+                block = v->data;
+        } else if (v && !std::holds_alternative<Numeric>(v->data)) {
             next();
             block = v->data;
         }
@@ -132,9 +139,8 @@ inline void Parser::directive_declare(const Token& d, bool local) {
             return;
         }
     }
-    if (t.kind == TokenKind::string) {
-        next();
-        store(t.text);
+    if (starts_string(t)) {
+        store(parse_string_expression("the value of `" + id.text + "`"));
         expect_symbol(";", "after the value of `" + id.text + "`");
         return;
     }

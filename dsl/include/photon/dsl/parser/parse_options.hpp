@@ -21,6 +21,14 @@ namespace photon::dsl {
 /// `#ifdef (photon_version)` selects photon's own settings (POV-Ray skips them).
 inline constexpr double photon_version = double(PHOTON_VERSION_MAJOR) + double(PHOTON_VERSION_MINOR) / 10.0;
 
+/// POV-Ray's animation identifiers. The defaults are POV-Ray's without animation options (a
+/// still image): every value 0, clock_on false.
+struct AnimationClock {
+    double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
+    double frame_number = 0, initial_frame = 0, final_frame = 0;
+    bool clock_on = false;
+};
+
 struct ParseOptions {
     /// Searched for `#include` files after the including file's own directory.
     std::vector<std::filesystem::path> include_paths;
@@ -33,6 +41,8 @@ struct ParseOptions {
     DiagnosticSink diagnostics;
     /// Values of POV-Ray's `image_width` and `image_height`.
     unsigned image_width = 800, image_height = 600;
+    /// Values of `clock`, `clock_delta`, `frame_number`, ... (POV-Ray's +K options).
+    AnimationClock animation;
 
     std::size_t max_file_bytes = std::size_t(64) << 20;
     unsigned max_include_depth = 32;

@@ -62,7 +62,8 @@ inline bool Parser::starts_expression(const Token& t) const {
     if (t.kind != TokenKind::identifier) return false;
     if (one_of(t.text, constants) || one_of(t.text, functions) || one_of(t.text, color_keywords)) return true;
     const Value* v = lookup(t.text);
-    return v && std::holds_alternative<Numeric>(v->data);
+    return v && (std::holds_alternative<Numeric>(v->data) ||
+                 std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data));
 }
 
 /// `on`, `off`, any number, or nothing (meaning on).
