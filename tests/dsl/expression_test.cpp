@@ -8,6 +8,8 @@
 
 #include "dsl_test_util.hpp"
 
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 
@@ -290,4 +292,23 @@ TEST_CASE("user function errors are located", "[dsl][functions]") {
     CHECK_THAT(error_of(doubling + "#declare A = F40(1, 0, 0);"), Contains("functions call each other too deeply"));
     CHECK_THAT(error_of("#declare F = function { sum(i, 0, 1e300, i) }\n#declare A = F(0, 0, 0);", small),
                Contains("function evaluation too long"));
+}
+
+TEST_CASE("the fuzz seeds of strings and functions read as scenes", "[dsl][functions]") {
+    dsl::ParseOptions o;
+    o.read_include = [](const std::string& name) -> std::optional<std::string> {
+        if (name == "colors.inc") return std::string("#declare Red = rgb <1, 0, 0>;\n");
+        return std::nullopt;
+    };
+    for (const char* name : {"strings.pov", "functions.pov"}) {
+        INFO(name);
+        std::ifstream in(std::string(PHOTON_SCENES_DIR) + "/../../fuzz/seeds/" + name, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        REQUIRE(!text.empty());
+        CHECK_NOTHROW(parse(text, o));
+    }
+    // What the strings seed prints: its #warning, evaluated.
+    std::ifstream in(std::string(PHOTON_SCENES_DIR) + "/../../fuzz/seeds/strings.pov", std::ios::binary);
+    const Parsed p = parse(std::string((std::istreambuf_iterator<char>(in)), {}), o);
+    CHECK_THAT(all_messages(p.warnings), Contains("#warning: N = 448.000000 ell"));
 }
