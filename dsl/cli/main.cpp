@@ -9,6 +9,8 @@
 
 #include <photon/dsl/dsl.hpp>
 
+#include "setting_options.hpp"
+
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -64,7 +66,7 @@ struct SceneOptions {
         cmd.add_option("-D,--define", defines, "Declare a float before reading the scene: NAME=VALUE (repeatable)")
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-        cmd.add_option("-I,--include-path", include_paths, "Also look for #include files in DIR (repeatable)")
+        cmd.add_option("-I,--include-path", include_paths, "Also look for #include files in DIR (repeatable), before PHOTON_INCLUDE_PATH and POV-Ray's own include directory")
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
         cmd.add_flag("--strict", strict, "Treat warnings as errors (exit status 1)");
@@ -81,9 +83,11 @@ struct SceneOptions {
     dsl::ParseOptions parse_options(unsigned width, unsigned height) {
         dsl::ParseOptions o;
         o.diagnostics = sink();
+        o.geometry = dsl::library_object_geometry();  // trace(), min_extent(), max_extent()
         o.image_width = width;
         o.image_height = height;
         for (const auto& dir : include_paths) o.include_paths.emplace_back(dir);
+        for (auto& dir : dsl::standard_include_paths()) o.include_paths.push_back(std::move(dir));
         for (const auto& d : defines) {
             const auto eq = d.find('=');
             const std::string name = d.substr(0, eq);
@@ -111,18 +115,10 @@ struct SceneOptions {
     }
 };
 
+/// `photon render`'s options: the render settings (from the settings table), and the output.
 struct RenderOptions {
+    photon::cli::SettingOptions settings;
     std::string output;
-    std::optional<unsigned> width, height, spp, shadow_samples, final_gather, ray_depth, photon_depth, threads;
-    std::optional<float> irradiance_cache;
-    std::optional<unsigned> irradiance_stride;
-    std::optional<unsigned> global_k, caustic_k;
-    std::optional<float> global_radius, caustic_radius;
-    std::optional<std::size_t> global_photons, caustic_photons;
-    std::optional<unsigned> sppm_passes;
-    std::optional<std::size_t> sppm_photons;
-    std::optional<std::uint64_t> seed;
-    std::string mode;
     float exposure = 1.0f;
     bool no_stats = false;
     bool no_mis = false;
@@ -267,33 +263,21 @@ private:
     bool line_done_ = false;
 };
 
-photon::RenderMode parse_mode(const std::string& m) {
-    if (m == "rt") return photon::RenderMode::rt;
-    if (m == "pm") return photon::RenderMode::pm;
-    if (m == "reference") return photon::RenderMode::reference;
-    if (m == "sppm") return photon::RenderMode::sppm;
-    return photon::RenderMode::pm_direct;
-}
-
 int run_render(SceneOptions& so, const RenderOptions& ro) {
     const fs::path output(ro.output);
     photon::check_writable_image_path(output);
     dsl::BuildOptions bo;
     bo.diagnostics = so.sink();
-    auto& o = bo.overrides;
-    o.width = ro.width, o.height = ro.height;
-    if (!ro.mode.empty()) o.mode = parse_mode(ro.mode);
-    o.global_photons = ro.global_photons, o.caustic_photons = ro.caustic_photons;
-    o.samples_per_pixel = ro.spp, o.shadow_samples = ro.shadow_samples, o.final_gather_rays = ro.final_gather;
-    o.irradiance_cache_error = ro.irradiance_cache;
-    o.irradiance_stride = ro.irradiance_stride;
-    o.sppm_passes = ro.sppm_passes, o.sppm_photons_per_pass = ro.sppm_photons;
-    o.max_ray_depth = ro.ray_depth, o.max_photon_depth = ro.photon_depth, o.threads = ro.threads, o.seed = ro.seed;
-    o.global_k = ro.global_k, o.caustic_k = ro.caustic_k, o.global_radius = ro.global_radius,
-    o.caustic_radius = ro.caustic_radius;
+    bo.overrides = ro.settings.overrides();
+    // POV-Ray's image_width and image_height are the command line's size when it gives one.
+    auto size = [&](const char* key, unsigned otherwise) {
+        const auto it = bo.overrides.find(key);
+        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second)) return otherwise;
+        return unsigned(std::get<std::uint64_t>(it->second));
+    };
 
     const dsl::SceneDescription desc =
-        dsl::parse_file(so.scene, so.parse_options(ro.width.value_or(800), ro.height.value_or(600)));
+        dsl::parse_file(so.scene, so.parse_options(size("width", 800), size("height", 600)));
     dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
     if (so.failed_strict()) return exit_error;
     photon::RenderSettings& settings = built.settings;
@@ -425,46 +409,7 @@ int main(int argc, char** argv) {
                      "Image to write: .png, .exr, .jpg, .tif, .hdr (anything OpenImageIO writes). "
                      "Floating-point formats hold radiance, 8-bit ones sRGB")
         ->required();
-    render->add_option("--width", ro.width, "Image width in pixels")->check(CLI::Range(1u, 65536u));
-    render->add_option("--height", ro.height, "Image height in pixels")->check(CLI::Range(1u, 65536u));
-    render
-        ->add_option("--mode", ro.mode,
-                     "rt: ray tracing, direct light only; pm: photon mapping (global illumination); "
-                     "pm-direct: everything read from the photon maps; reference: path tracing, "
-                     "slow and unbiased, to check the others against, except that it cannot see light "
-                     "from point lights through mirrors or glass onto diffuse surfaces (renders it black) "
-                     "and finds sphere-light caustics by chance (noisy); sppm: stochastic progressive photon "
-                     "mapping, consistent for every light path (caustics of point lights too), the judge")
-        ->check(CLI::IsMember({"rt", "pm", "pm-direct", "pm_direct", "reference", "sppm"}));
-    render->add_option("--global-photons", ro.global_photons, "Photons emitted for the global map");
-    render->add_option("--caustic-photons", ro.caustic_photons,
-                       "Photons emitted towards mirrors and glass for the caustic map");
-    render->add_option("--global-k", ro.global_k, "Photons per global estimate")->check(CLI::PositiveNumber);
-    render->add_option("--global-radius", ro.global_radius, "Largest radius of a global estimate (scene units)")
-        ->check(CLI::PositiveNumber);
-    render->add_option("--caustic-k", ro.caustic_k, "Photons per caustic estimate")->check(CLI::PositiveNumber);
-    render->add_option("--caustic-radius", ro.caustic_radius, "Largest radius of a caustic estimate")
-        ->check(CLI::PositiveNumber);
-    render->add_option("--passes", ro.sppm_passes, "sppm: passes (one camera ray per pixel and a photon set each)")
-        ->check(CLI::Range(1u, 1'000'000u));
-    render->add_option("--photons-per-pass", ro.sppm_photons, "sppm: photons emitted per pass")
-        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 31));
-    render->add_option("--spp", ro.spp, "Samples per pixel (anti-aliasing)")->check(CLI::PositiveNumber);
-    render->add_option("--shadow-samples", ro.shadow_samples, "Shadow rays per area light and shading point")
-        ->check(CLI::PositiveNumber);
-    render->add_option("--final-gather", ro.final_gather,
-                       "Rays per final gather in pm mode (0: read the global map at the first diffuse hit)");
-    render->add_option("--irradiance-cache", ro.irradiance_cache,
-                       "Error bound of the cache of final gathers (Ward's a, default 0.2; 0: gather at every sample)")
-        ->check(CLI::Range(0.0f, 1.0f));
-    render->add_option("--irradiance-stride", ro.irradiance_stride,
-                       "Final gather rays read irradiance precomputed at every N-th global photon "
-                       "(default 4; 0: a full density estimate per gather ray)");
-    render->add_option("--ray-depth", ro.ray_depth, "Longest camera path, primary ray = 1 (POV-Ray's max_trace_level)")
-        ->check(CLI::PositiveNumber);
-    render->add_option("--photon-depth", ro.photon_depth, "Most bounces of a photon")->check(CLI::PositiveNumber);
-    render->add_option("--threads", ro.threads, "Worker threads (0: all cores); the image does not depend on it");
-    render->add_option("--seed", ro.seed, "Random seed; the same seed gives the same image");
+    ro.settings.add_to(*render);
     render->add_option("--exposure", ro.exposure, "Multiplies radiance before 8-bit output (PNG, JPEG)")
         ->check(CLI::PositiveNumber);
     render->add_flag("--no-stats", ro.no_stats, "Do not print the statistics table");

@@ -375,7 +375,7 @@ TEST_CASE("damaged scene files give a located error or a scene, never anything e
         try {
             const auto desc = dsl::parse_string(t, "damaged.pov");
             dsl::BuildOptions o;
-            o.overrides.width = 8, o.overrides.height = 6;
+            o.overrides = {{"width", 8u}, {"height", 6u}};
             (void)dsl::build<float>(desc, o);
         } catch (const dsl::Error&) {
         }

@@ -65,7 +65,7 @@ TEST_CASE("numbers, operators, constants and functions evaluate as in POV-Ray", 
     CHECK(float_of("1e-3 * 1000") == Approx(1));
     CHECK(float_of(".5 + 1.") == 1.5);
     CHECK(float_of("(2 < 3) + (2 = 2) + (3 != 3) + (1 & 0) + (1 | 0) + !0") == 4);
-    CHECK(float_of("2 > 1 ? 4 : 8") == 4);
+    CHECK(float_of("(2 > 1 ? 4 : 8)") == 4);  // a parameter takes comparisons in parentheses, as POV-Ray
     CHECK(float_of("vlength(<3, 4, 0>)") == 5);
     CHECK(float_of("vdot(x, y) + vlength(vcross(x, y))") == 1);
     CHECK(float_of("<1, 2, 3>.y + (x + 2*z).z") == 4);
@@ -87,6 +87,13 @@ TEST_CASE("vectors: literals, x y z, float promotion and component-wise arithmet
     CHECK(translation_of("<1, 2>") == Vec3<double>(1, 2, 0));
     CHECK(near(translation_of("vnormalize(<0, 3, 4>)"), {0, 0.6, 0.8}));
     CHECK(near(translation_of("vrotate(x, <0, 90, 0>)"), {0, 0, -1}, 1e-15));
+    CHECK(translation_of("<1 2 3>") == Vec3<double>(1, 2, 3));  // commas are optional, as in POV-Ray
+    CHECK(translation_of("<1 2 -3>") == Vec3<double>(1, -1, 0));  // ... and `2 -3` is a difference there too
+    // Parameters are read at the level of sums, so back-to-back vectors are two parameters
+    // (POV-Ray's radiosity Cornell box writes `box { <21.3,54.87,33.2><34.3,54.88,22.7> }`).
+    const auto d = dsl::parse_string("box { <0, 0, 0><1, 2, 3> }");
+    const auto& b = std::get<dsl::BoxShape>(d.objects.at(0).shape);
+    CHECK(b.corner2 == dsl::Vector3(1, 2, 3));
 }
 
 TEST_CASE("colours: rgb, rgbf, rgbt, rgbft, keywords and POV-Ray's float promotion", "[dsl][expr]") {
@@ -289,8 +296,18 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2); area light
             "light_source { <0, 5, 0>, rgb 1 spotlight point_at 0 fade_distance 1 fade_power 2 }\n"
             "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
             &w);
-        CHECK(light_cone(b2.scene.lights()[0])->half_angle_degrees() == Approx(37.5));  // between 30 and 45
+        // POV-Ray's default profile: 1 inside 30 degrees, a smooth step to 0 at 45. Same power:
+        // 1 - cos(half) = (1 - cos 30) + (cos 30 - cos 45) / 2, half = 38.137 degrees.
+        CHECK(light_cone(b2.scene.lights()[0])->half_angle_degrees() == Approx(38.137).epsilon(1e-4));
         CHECK_THAT(all_messages(w), Contains("sharp edge"));
+        // POV-Ray's radiosity Cornell box: `radius -90 falloff 90 tightness 1` is a cosine lobe,
+        // power pi I, the cone of solid angle pi: half-angle 60 degrees.
+        const auto b3 = built(
+            "light_source { <0, 5, 0>, rgb 1 spotlight radius -90 falloff 90 tightness 1 point_at 0\n"
+            "  fade_distance 1 fade_power 2 }\n"
+            "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
+            &w);
+        CHECK(light_cone(b3.scene.lights()[0])->half_angle_degrees() == Approx(60).epsilon(1e-5));
     }
     SECTION("transforms move lights; shadowless and looks_like warn") {
         const auto b = built(
@@ -589,7 +606,7 @@ TEST_CASE("render settings: POV-Ray's keywords, photon's own, then overrides", "
     CHECK(s.seed == 42);
 
     dsl::SettingsOverrides o;
-    o.width = 40, o.mode = RenderMode::pm, o.global_photons = 10, o.seed = 7, o.caustic_radius = 0.1f;
+    o = {{"width", 40u}, {"mode", "pm"}, {"global_photons", 10u}, {"seed", 7u}, {"caustic_estimate.max_radius", 0.1}};
     const auto b2 = built(text, nullptr, o);
     CHECK(b2.settings.width == 40);
     CHECK(b2.settings.height == 200);
@@ -628,7 +645,7 @@ TEST_CASE("render_mode sppm and its passes: from the file, the command line, and
     CHECK(b.settings.sppm_passes == 12);
     CHECK(b.settings.sppm_photons_per_pass == 3456);
     dsl::SettingsOverrides o;
-    o.sppm_passes = 5, o.sppm_photons_per_pass = 77;
+    o = {{"sppm_passes", 5u}, {"sppm_photons_per_pass", 77u}};
     const auto b2 = built(text, nullptr, o);
     CHECK(b2.settings.sppm_passes == 5);
     CHECK(b2.settings.sppm_photons_per_pass == 77);

@@ -165,14 +165,13 @@ TEST_CASE("export-pov writes a file that reads back as the same scene", "[dsl][s
 }
 
 TEST_CASE("every example scene renders a small image without NaN or Inf", "[dsl][scenes][render]") {
-    dsl::SettingsOverrides small;
-    small.width = 40, small.height = 30;
-    small.global_photons = 4000, small.caustic_photons = 2000;
-    small.samples_per_pixel = 1, small.shadow_samples = 1, small.final_gather_rays = 4;
+    dsl::SettingsOverrides small = {{"width", 40u},          {"height", 30u},           {"global_photons", 4000u},
+                                    {"caustic_photons", 2000u}, {"samples_per_pixel", 1u}, {"shadow_samples", 1u},
+                                    {"final_gather_rays", 4u}};
     for (const char* name : scenes) {
         for (const RenderMode mode : {RenderMode::rt, RenderMode::pm}) {
             INFO(name << " " << to_string(mode));
-            small.mode = mode;
+            small["mode"] = std::string(dsl::render_mode_name(mode));
             std::vector<dsl::Diagnostic> warnings;
             const auto b = load<float>(name, warnings, small);
             const RenderResult r = render(b.scene, b.camera, b.settings);
@@ -184,9 +183,8 @@ TEST_CASE("every example scene renders a small image without NaN or Inf", "[dsl]
 }
 
 TEST_CASE("the Cornell box has its red wall on the left of the image", "[dsl][scenes][render]") {
-    dsl::SettingsOverrides small;
-    small.width = 32, small.height = 24, small.mode = RenderMode::rt, small.samples_per_pixel = 1,
-    small.shadow_samples = 1;
+    const dsl::SettingsOverrides small = {
+        {"width", 32u}, {"height", 24u}, {"mode", "rt"}, {"samples_per_pixel", 1u}, {"shadow_samples", 1u}};
     std::vector<dsl::Diagnostic> warnings;
     const auto b = load<float>("cornell", warnings, small);
     const Film film = render(b.scene, b.camera, b.settings).film;

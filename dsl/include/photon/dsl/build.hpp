@@ -6,8 +6,10 @@
 // in POV-Ray's order of application. Library constructors that reject a value
 // (std::invalid_argument) are reported as dsl::Error at the place the value was written.
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -19,25 +21,14 @@
 
 #include "description.hpp"
 #include "diagnostics.hpp"
+#include "settings_table.hpp"
 #include "value.hpp"
 
 namespace photon::dsl {
 
-/// Settings given outside the scene file (the command line); each one present overrides the file.
-struct SettingsOverrides {
-    std::optional<unsigned> width, height;
-    std::optional<RenderMode> mode;
-    std::optional<std::size_t> global_photons, caustic_photons;
-    std::optional<unsigned> samples_per_pixel, shadow_samples, final_gather_rays, max_ray_depth, max_photon_depth;
-    std::optional<float> irradiance_cache_error;
-    std::optional<unsigned> irradiance_stride;
-    std::optional<unsigned> sppm_passes;
-    std::optional<std::size_t> sppm_photons_per_pass;
-    std::optional<unsigned> threads;
-    std::optional<std::uint64_t> seed;
-    std::optional<unsigned> global_k, caustic_k;
-    std::optional<float> global_radius, caustic_radius;
-};
+/// Settings given outside the scene file (the command line), by the settings table's key
+/// ("samples_per_pixel", "global_estimate.k", settings_table.hpp); each one overrides the file.
+using SettingsOverrides = std::map<std::string, SettingValue, std::less<>>;
 
 struct BuildOptions {
     SettingsOverrides overrides;
@@ -64,6 +55,34 @@ private:
     DiagnosticSink sink_;
     std::set<std::string> seen_;
 };
+
+/// POV-Ray 3.7's spotlight intensity relative to its axis (Attenuate_Light): cos^tightness in
+/// the front hemisphere, times a smooth step from cos(falloff) up to cos(radius) when
+/// cos(radius) > 0. A negative or 90-degree radius therefore means "no soft edge", the cosine
+/// lobe of `radius -90 falloff 90 tightness 1` in POV-Ray's radiosity Cornell box.
+[[nodiscard]] inline double pov_spotlight_profile(double cos_theta, const Spotlight& sp) {
+    constexpr double deg = 3.14159265358979323846 / 180.0;
+    if (!(cos_theta > 0)) return 0;
+    double a = std::pow(cos_theta, sp.tightness);
+    const double cos_radius = std::cos(sp.radius * deg), cos_falloff = std::cos(sp.falloff * deg);
+    if (cos_radius > 0 && cos_theta < cos_radius) {
+        if (cos_theta < cos_falloff) return 0;  // POV-Ray's cubic_spline: 0 below low, 1 from high
+        const double t = (cos_theta - cos_falloff) / (cos_radius - cos_falloff);
+        a *= (3 - 2 * t) * t * t;
+    }
+    return a;
+}
+
+/// Half-angle in degrees of the sharp cone that carries a POV-Ray spotlight's power at its axial
+/// intensity: 1 - cos(half) = the integral of the profile over cos(theta) in [0, 1] (midpoint
+/// rule; the profile is smooth but for at most two kinks, so 2^14 points are within 1e-6).
+[[nodiscard]] inline double pov_spotlight_cone_half_angle(const Spotlight& sp) {
+    constexpr int n = 1 << 14;
+    double integral = 0;
+    for (int i = 0; i < n; ++i) integral += pov_spotlight_profile((i + 0.5) / n, sp);
+    integral /= n;
+    return std::acos(std::clamp(1 - integral, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+}
 
 /// The camera's vectors after POV-Ray's rules, in world space.
 struct ResolvedCamera {
@@ -231,14 +250,13 @@ template <Scalar S>
     return p;
 }
 
-/// Render settings from the file (POV-Ray's keywords where they mean the same, photon's own
-/// otherwise), then `overrides`. Throws dsl::Error if the result is out of range.
+/// Render settings: the library's defaults, then POV-Ray's photons block, then the file's items of
+/// the settings table, then `overrides` (each one setting through the table). Throws dsl::Error if
+/// a file's value is out of range, std::invalid_argument naming the option if an override is.
 [[nodiscard]] inline RenderSettings render_settings(const SceneDescription& desc, const SettingsOverrides& o,
                                                     Warnings& warn) {
     RenderSettings s;
     const GlobalSettings& g = desc.settings;
-    const PhotonSettings& p = g.photon;
-    if (g.max_trace_level) s.max_ray_depth = *g.max_trace_level;
     if (g.photons) {
         const PovPhotons& ph = *g.photons;
         if (ph.count)
@@ -251,33 +269,17 @@ template <Scalar S>
         if (ph.radius) s.caustic_estimate.max_radius = float(*ph.radius);
         if (ph.max_trace_level) s.max_photon_depth = *ph.max_trace_level;
     }
-    if (p.width) s.width = *p.width;
-    if (p.height) s.height = *p.height;
-    if (p.render_mode)
-        s.mode = *p.render_mode == "rt"     ? RenderMode::rt
-                 : *p.render_mode == "pm"   ? RenderMode::pm
-                 : *p.render_mode == "sppm" ? RenderMode::sppm
-                                            : RenderMode::pm_direct;
-    if (p.global_photons) s.global_photons = std::size_t(*p.global_photons);
-    if (p.caustic_photons) s.caustic_photons = std::size_t(*p.caustic_photons);
-    for (auto [from, to] :
-         {std::pair{&p.global_estimate, &s.global_estimate}, std::pair{&p.caustic_estimate, &s.caustic_estimate}}) {
-        if (from->count) to->k = *from->count;
-        if (from->radius) to->max_radius = float(*from->radius);
-        if (from->flatten) to->flatten = float(*from->flatten);
-        if (from->probes) to->boundary_probes = *from->probes;
+    for (const auto& [key, written] : g.render) {
+        try {  // checked where written already, unless the description was made by a program
+            const RenderSetting* setting = find_setting(key);
+            std::string keyword = "`";
+            keyword.append(setting ? setting->keyword : key).push_back('`');
+            apply_setting(key, written.value, s, keyword);
+        } catch (const std::invalid_argument& e) {
+            throw Error(written.at, e.what());
+        }
     }
-    if (p.max_photon_depth) s.max_photon_depth = *p.max_photon_depth;
-    if (p.final_gather) s.final_gather_rays = *p.final_gather;
-    if (p.samples_per_pixel) s.samples_per_pixel = *p.samples_per_pixel;
-    if (p.irradiance_stride) s.irradiance_stride = *p.irradiance_stride;
-    if (p.irradiance_cache) s.irradiance_cache_error = float(*p.irradiance_cache);
-    if (p.sppm_passes) s.sppm_passes = *p.sppm_passes;
-    if (p.sppm_photons) s.sppm_photons_per_pass = std::size_t(*p.sppm_photons);
-    if (p.seed) s.seed = *p.seed;
-    if (p.shadow_samples) {
-        s.shadow_samples = *p.shadow_samples;
-    } else {
+    if (!g.render.count("shadow_samples")) {
         // POV-Ray's area_light N1 x N2 grid is its number of shadow rays per light.
         unsigned most = 0;
         std::function<void(const Object&)> visit = [&](const Object& obj) {
@@ -289,26 +291,7 @@ template <Scalar S>
         for (const Object& obj : desc.objects) visit(obj);
         if (most > 1) s.shadow_samples = most;
     }
-    if (o.width) s.width = *o.width;
-    if (o.height) s.height = *o.height;
-    if (o.mode) s.mode = *o.mode;
-    if (o.global_photons) s.global_photons = *o.global_photons;
-    if (o.caustic_photons) s.caustic_photons = *o.caustic_photons;
-    if (o.samples_per_pixel) s.samples_per_pixel = *o.samples_per_pixel;
-    if (o.shadow_samples) s.shadow_samples = *o.shadow_samples;
-    if (o.final_gather_rays) s.final_gather_rays = *o.final_gather_rays;
-    if (o.irradiance_cache_error) s.irradiance_cache_error = *o.irradiance_cache_error;
-    if (o.irradiance_stride) s.irradiance_stride = *o.irradiance_stride;
-    if (o.sppm_passes) s.sppm_passes = *o.sppm_passes;
-    if (o.sppm_photons_per_pass) s.sppm_photons_per_pass = *o.sppm_photons_per_pass;
-    if (o.max_ray_depth) s.max_ray_depth = *o.max_ray_depth;
-    if (o.max_photon_depth) s.max_photon_depth = *o.max_photon_depth;
-    if (o.threads) s.threads = *o.threads;
-    if (o.seed) s.seed = *o.seed;
-    if (o.global_k) s.global_estimate.k = *o.global_k;
-    if (o.caustic_k) s.caustic_estimate.k = *o.caustic_k;
-    if (o.global_radius) s.global_estimate.max_radius = *o.global_radius;
-    if (o.caustic_radius) s.caustic_estimate.max_radius = *o.caustic_radius;
+    for (const auto& [key, value] : o) apply_setting(key, value, s);  // std::invalid_argument names the option
     try {
         validate(s);
     } catch (const std::invalid_argument& e) {
@@ -479,17 +462,21 @@ private:
                 const Vector3 axis = t.point(sp.point_at) - position;
                 if (glm::length(axis) == 0.0)
                     throw Error(item("point_at"), "spotlight point_at equals the light's position");
-                double half = sp.radius;
-                if (sp.radius != sp.falloff || sp.tightness != 0) {
-                    half = 0.5 * (sp.radius + std::max(sp.falloff, sp.radius));
+                // POV-Ray's profile becomes a sharp cone with the same power, exact when the
+                // profile is one (radius = falloff, tightness 0, radius within the front hemisphere).
+                const bool sharp = sp.radius == sp.falloff && sp.tightness == 0 && sp.radius > 0 && sp.radius <= 90;
+                const double half = sharp ? sp.radius : pov_spotlight_cone_half_angle(sp);
+                if (!sharp)
                     warn_(sp.at.known() ? sp.at : l.at,
-                          "photon's spotlight has a sharp edge: it emits into a cone of half-angle " +
-                              format_number(half) +
-                              " degrees (between `radius` and `falloff`), without POV-Ray's soft edge and `tightness`. "
-                              "Write `radius A falloff A tightness 0` for an exact cone");
-                }
+                          "photon's spotlight has a sharp edge: POV-Ray's soft edge (`radius` " +
+                              format_number(sp.radius) + ", `falloff` " + format_number(sp.falloff) +
+                              ", `tightness` " + format_number(sp.tightness) +
+                              ") becomes a cone of half-angle " + format_number(std::round(half * 100) / 100) +
+                              " degrees carrying the same power. Write `radius A falloff A tightness 0` for an exact "
+                              "cone");
                 if (!(half > 0))
-                    throw Error(item("radius"), "spotlight `radius` and `falloff` must be above 0 degrees");
+                    throw Error(item("radius"), "this spotlight emits no light: its `radius`, `falloff` and `tightness` "
+                                                "leave no direction lit");
                 cone.emplace(Vec3<S>(axis), S(half));
             }
             const S solid_angle = cone ? cone->solid_angle() : S(4) * pi<S>;

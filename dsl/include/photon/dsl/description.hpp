@@ -239,13 +239,6 @@ struct CameraDescription {
     SourceLocation at;
 };
 
-/// A density estimate as written in photon's own settings.
-struct EstimateDescription {
-    std::optional<unsigned> count;
-    std::optional<double> radius, flatten;
-    std::optional<unsigned> probes;
-};
-
 /// POV-Ray's `global_settings { photons { } }` (its caustic photons).
 struct PovPhotons {
     std::optional<std::uint64_t> count;
@@ -257,28 +250,25 @@ struct PovPhotons {
     SourceLocation at;
 };
 
-/// photon's own settings: global_settings items POV-Ray does not know, written inside
-/// `#ifdef (photon_version) ... #end` so that POV-Ray skips them.
-struct PhotonSettings {
-    std::optional<unsigned> width, height;
-    std::optional<std::string> render_mode;  ///< rt, pm, pm_direct or sppm
-    std::optional<std::uint64_t> global_photons, caustic_photons;
-    EstimateDescription global_estimate, caustic_estimate;
-    std::optional<unsigned> max_photon_depth, final_gather, shadow_samples, samples_per_pixel, irradiance_stride;
-    std::optional<double> irradiance_cache;  ///< error bound of the final-gather cache, 0: off
-    std::optional<unsigned> sppm_passes;
-    std::optional<std::uint64_t> sppm_photons;  ///< per pass
-    std::optional<std::uint64_t> seed;
+/// A render setting's value as written: a whole number, a real, or a name (a render mode's).
+using SettingValue = std::variant<std::uint64_t, double, std::string>;
+
+/// One render setting of the settings table (settings_table.hpp) as the file writes it.
+struct WrittenSetting {
+    SettingValue value;
+    SourceLocation at;  ///< the setting's keyword
 };
 
 struct GlobalSettings {
     std::optional<double> assumed_gamma;
     Vector3 ambient_light{1.0};
-    std::optional<unsigned> max_trace_level;
     std::optional<double> adc_bailout;
     bool radiosity = false;
     std::optional<PovPhotons> photons;
-    PhotonSettings photon;
+    /// The settings of the settings table (photon's own items, inside `#ifdef (photon_version)`,
+    /// and POV-Ray's max_trace_level), by the RenderSettings field each one sets
+    /// ("samples_per_pixel", "global_estimate.k").
+    std::map<std::string, WrittenSetting> render;
     std::map<std::string, SourceLocation> written;  ///< every item, photon's own ones included
     SourceLocation at;
 };

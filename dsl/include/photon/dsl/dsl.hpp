@@ -15,6 +15,7 @@
 #include "diagnostics.hpp"
 #include "export_pov.hpp"
 #include "lexer.hpp"
+#include "object_geometry.hpp"
 #include "parser.hpp"
 #include "value.hpp"
 

@@ -6,12 +6,14 @@
 // photon's own settings inside `#ifdef (photon_version) ... #end`, which POV-Ray skips. Reading
 // the result again gives the same description (a round trip the tests check).
 
+#include <ostream>
 #include <sstream>
 #include <string>
 
 #include <photon/version.hpp>
 
 #include "description.hpp"
+#include "settings_table.hpp"
 #include "value.hpp"
 
 namespace photon::dsl {
@@ -44,7 +46,7 @@ private:
         out_ << "global_settings {\n";
         if (g.assumed_gamma) out_ << "  assumed_gamma " << num(*g.assumed_gamma) << '\n';
         if (g.written.count("ambient_light")) out_ << "  ambient_light rgb " << vec(g.ambient_light) << '\n';
-        if (g.max_trace_level) out_ << "  max_trace_level " << *g.max_trace_level << '\n';
+        table_items(g, true, out_);
         if (g.adc_bailout) out_ << "  adc_bailout " << num(*g.adc_bailout) << '\n';
         if (g.photons) {
             const PovPhotons& p = *g.photons;
@@ -58,34 +60,31 @@ private:
         }
         if (g.radiosity) out_ << "  // the scene's radiosity block is not reproduced (photon does not read it)\n";
         out_ << "}\n";
-        const PhotonSettings& p = g.photon;
         std::ostringstream own;
-        if (p.width) own << "  width " << *p.width << '\n';
-        if (p.height) own << "  height " << *p.height << '\n';
-        if (p.render_mode) own << "  render_mode " << *p.render_mode << '\n';
-        if (p.global_photons) own << "  global_photons " << *p.global_photons << '\n';
-        if (p.caustic_photons) own << "  caustic_photons " << *p.caustic_photons << '\n';
-        for (auto [name, e] :
-             {std::pair{"global_estimate", &p.global_estimate}, std::pair{"caustic_estimate", &p.caustic_estimate}}) {
-            if (!e->count && !e->radius && !e->flatten && !e->probes) continue;
-            own << "  " << name << " {";
-            if (e->count) own << " count " << *e->count;
-            if (e->radius) own << " radius " << num(*e->radius);
-            if (e->flatten) own << " flatten " << num(*e->flatten);
-            if (e->probes) own << " probes " << *e->probes;
-            own << " }\n";
-        }
-        if (p.max_photon_depth) own << "  max_photon_depth " << *p.max_photon_depth << '\n';
-        if (p.final_gather) own << "  final_gather " << *p.final_gather << '\n';
-        if (p.shadow_samples) own << "  shadow_samples " << *p.shadow_samples << '\n';
-        if (p.samples_per_pixel) own << "  samples_per_pixel " << *p.samples_per_pixel << '\n';
-        if (p.irradiance_stride) own << "  irradiance_stride " << *p.irradiance_stride << '\n';
-        if (p.irradiance_cache) own << "  irradiance_cache " << *p.irradiance_cache << '\n';
-        if (p.sppm_passes) own << "  sppm_passes " << *p.sppm_passes << '\n';
-        if (p.sppm_photons) own << "  sppm_photons " << *p.sppm_photons << '\n';
-        if (p.seed) own << "  seed " << *p.seed << '\n';
+        table_items(g, false, own);
         if (!own.str().empty()) out_ << "#ifdef (photon_version)\nglobal_settings {\n" << own.str() << "}\n#end\n";
         out_ << '\n';
+    }
+
+    /// The settings table's items the file wrote, POV-Ray's own ones or photon's, in the table's
+    /// order; the items of a block (global_estimate { count 50 radius 0.5 }) together.
+    static void table_items(const GlobalSettings& g, bool povray, std::ostream& out) {
+        std::string_view done_block;
+        for (const RenderSetting& s : render_settings_table) {
+            if (s.povray != povray || s.keyword.empty() || (!s.block.empty() && s.block == done_block)) continue;
+            if (s.block.empty()) {
+                if (const auto it = g.render.find(std::string(s.key)); it != g.render.end())
+                    out << "  " << s.keyword << ' ' << format_setting_value(it->second.value) << '\n';
+                continue;
+            }
+            done_block = s.block;
+            std::string items;
+            for (const RenderSetting& e : render_settings_table)
+                if (e.block == s.block)
+                    if (const auto it = g.render.find(std::string(e.key)); it != g.render.end())
+                        items.append(" ").append(e.keyword).append(" ").append(format_setting_value(it->second.value));
+            if (!items.empty()) out << "  " << s.block << " {" << items << " }\n";
+        }
     }
 
     void transform(const Transform& t, int level) {

@@ -15,11 +15,13 @@
 
 #include "parser/token_stream.hpp"
 #include "parser/directives.hpp"
+#include "parser/file_io.hpp"
 #include "parser/expressions.hpp"
 #include "parser/builtins.hpp"
 #include "parser/strings.hpp"
 #include "parser/user_functions.hpp"
 #include "parser/object_queries.hpp"
+#include "parser/splines.hpp"
 #include "parser/typed_values.hpp"
 #include "parser/transforms.hpp"
 #include "parser/materials.hpp"

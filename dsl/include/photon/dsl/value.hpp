@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "description.hpp"
+#include "spline.hpp"
 
 namespace photon::dsl {
 
@@ -68,7 +69,7 @@ struct Numeric {
 struct UserFunction;  // user_function.hpp
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
-                               CameraDescription, std::shared_ptr<const UserFunction>>;
+                               CameraDescription, Spline, std::shared_ptr<const UserFunction>>;
 
 /// A declared identifier's value and where it was declared.
 struct Value {
@@ -99,6 +100,8 @@ struct Value {
             return std::holds_alternative<LightSource>(std::get<Object>(v).shape) ? "a light_source" : "an object";
         case 8:
             return "a camera";
+        case 9:
+            return "a spline";
         default:
             return "a function";
     }

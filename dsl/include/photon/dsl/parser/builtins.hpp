@@ -2,7 +2,7 @@
 #pragma once
 // POV-Ray's built-in functions in expressions: the float ones of builtin_math.hpp, select and
 // defined, rand and seed, and the vector ones (vcross, vrotate, vaxis_rotate, ...); the string
-// ones are in strings.hpp, the object queries (inside, min_extent, ...) in object_queries.hpp.
+// ones are in strings.hpp, the object queries (inside, trace, min_extent, max_extent) in object_queries.hpp.
 
 #include "parser_class.hpp"
 
@@ -11,7 +11,7 @@ namespace photon::dsl::detail {
 inline Numeric Parser::parse_function(const Token& f) {
     const std::string& w = f.text;
     if (one_of(w, {"strlen", "val", "asc", "strcmp", "file_exists"})) return parse_string_measure(f);
-    if (one_of(w, {"inside", "min_extent", "max_extent", "trace"})) return parse_object_query(f);
+    if (w == "inside") return parse_inside(f);
     expect_symbol("(", "after `" + w + "`");
     const bool saved = in_vector_;
     in_vector_ = false;

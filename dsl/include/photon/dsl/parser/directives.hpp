@@ -13,6 +13,13 @@ inline void Parser::directive(const Token& d) {
     // whose `#end` re-reads the condition); bounded like any nesting, so that no chain of
     // them can overflow the stack.
     const Nest nest(*this, d.location);
+    // A directive met while a block's parameter is read (`sphere { 0, 1 #if (A = 1) ...`) has
+    // its own expressions, where comparisons need no parentheses.
+    struct Restore {
+        bool& flag;
+        bool saved;
+        ~Restore() { flag = saved; }
+    } restore{in_vector_, std::exchange(in_vector_, false)};
     ++statements_;
     const std::string& name = d.text;
     if (name == "declare" || name == "local") {
@@ -62,20 +69,29 @@ inline void Parser::directive(const Token& d) {
         if (name == "warning") warn(d.location, "#warning: " + s.text);
     } else if (name == "default") {
         directive_default(d);
-    } else if (one_of(name, {"macro", "switch", "case", "range", "break", "for", "fopen", "fclose", "read", "write",
+    } else if (name == "fopen") {
+        directive_fopen(d);
+    } else if (name == "fclose") {
+        directive_fclose(d);
+    } else if (name == "read") {
+        directive_read(d);
+    } else if (name == "write") {
+        directive_write(d);
+    } else if (one_of(name, {"macro", "switch", "case", "range", "break", "for",
                              "statistics", "render"})) {
         fail(d.location, "`#" + name + "` is not supported by photon's scene language (see docs/scene-language.md)");
     } else {
         fail(d.location,
              "unknown directive `#" + name + "`" +
                  suggest(name, {"declare", "local", "undef", "include", "if", "ifdef", "ifndef", "else", "elseif",
-                                "end", "while", "version", "warning", "error", "debug", "default"}));
+                                "end", "while", "version", "warning", "error", "debug", "default", "fopen", "fclose",
+                                "read", "write"}));
     }
 }
 
 inline bool Parser::is_reserved(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
-           one_of(w, constants) || one_of(w, functions) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
+           one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
            one_of(w, other_keywords) || one_of(w, string_functions) || one_of(w, function_words);
 }
@@ -119,6 +135,8 @@ inline void Parser::directive_declare(const Token& d, bool local) {
             block = parse_camera(next());
         else if (w == "function")
             block = parse_user_function(next(), id.text);
+        else if (w == "spline")
+            block = parse_spline(next());
         else if (one_of(w, object_keywords)) {
             block = parse_object(next());
         } else if (one_of(w, unsupported_objects)) {

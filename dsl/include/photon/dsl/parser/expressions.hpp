@@ -193,6 +193,7 @@ inline Numeric Parser::parse_primary() {
             v.c[std::size_t(v.dim++)] = c.c[0];
             if (accept_symbol(",")) continue;
             if (peek().is_symbol(">")) break;
+            if (starts_expression(peek())) continue;  // POV-Ray's commas between components are optional
             fail_expected("`,` or `>` in the vector opened at " + position(t.location), peek());
         }
         next();
@@ -241,6 +242,7 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         return Numeric::scalar(options_.image_height);
     }
     if (one_of(w, functions)) return parse_function(next());
+    if (one_of(w, object_query_functions)) return parse_object_query(next());
     if (const Value* v = lookup(w)) {
         if (w == "photon_version") mentions_photon_version_ = true;
         if (const auto* n = std::get_if<Numeric>(&v->data)) {
@@ -250,6 +252,10 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(&v->data)) {
             const auto keep = *f;  // the call may redeclare the identifier (a directive in its arguments)
             return call_function_value(next(), *keep);
+        }
+        if (const auto* sp = std::get_if<Spline>(&v->data)) {
+            const Spline spline = *sp;  // the call may redeclare it
+            return parse_spline_call(next(), spline);
         }
         fail(t.location, "expected " + (expecting_.empty() ? std::string("a number or vector") : expecting_) +
                              ", found `" + w + "` (" + type_name(v->data) + ", declared at " +

@@ -3,12 +3,15 @@
 // The scene language's keyword tables, and the "did you mean" hints drawn from them.
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "../settings_table.hpp"
 
 namespace photon::dsl::detail {
 
@@ -35,6 +38,9 @@ struct Words {
     Words(std::initializer_list<std::string_view> l) : list(l.begin(), l.size()) {}
     template <std::size_t N>
     Words(const std::string_view (&a)[N]) : list(a) {}
+    template <std::size_t N>
+    Words(const std::array<std::string_view, N>& a) : list(a) {}
+    Words(const std::vector<std::string_view>& v) : list(v) {}
     [[nodiscard]] auto begin() const noexcept { return list.begin(); }
     [[nodiscard]] auto end() const noexcept { return list.end(); }
     [[nodiscard]] std::size_t size() const noexcept { return list.size(); }
@@ -78,13 +84,17 @@ inline constexpr std::string_view functions[] = {
     "log",         "max",         "min",        "mod",         "pow",        "radians",     "select",
     "sin",         "sinh",        "sqrt",       "tan",         "tanh",       "vcross",      "vdot",
     "vlength",     "vnormalize",  "vrotate",    "vaxis_rotate", "vturbulence", "rand",      "seed",
-    "strlen",      "val",         "asc",        "strcmp",     "file_exists", "inside",      "min_extent",
-    "max_extent",  "trace"};
+    "strlen",      "val",         "asc",        "strcmp",     "file_exists", "inside"};
 /// Built-ins whose value is a string.
 inline constexpr std::string_view string_functions[] = {"concat", "str",    "chr",    "substr",
                                                         "strupr", "strlwr", "vstr",   "datetime"};
 /// Words that only mean something inside `function { }`.
 inline constexpr std::string_view function_words[] = {"function", "internal", "sum", "prod"};
+/// Functions that ask an object's geometry (parser/object_queries.hpp).
+inline constexpr std::string_view object_query_functions[] = {"trace", "min_extent", "max_extent"};
+/// Kinds of `spline { }` (parser/splines.hpp).
+inline constexpr std::string_view spline_keywords[] = {"spline", "linear_spline", "quadratic_spline", "cubic_spline",
+                                                      "natural_spline"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",
@@ -129,23 +139,8 @@ inline constexpr std::string_view global_keywords[] = {
     "assumed_gamma",   "ambient_light", "max_trace_level", "adc_bailout",     "radiosity",
     "photons",         "charset",       "number_of_waves", "noise_generator", "max_intersections",
     "irid_wavelength", "hf_gray_16",    "mm_per_unit",     "subsurface"};
-/// photon's own global_settings items (POV-Ray does not know them).
-inline constexpr std::string_view photon_keywords[] = {"width",
-                                                       "height",
-                                                       "render_mode",
-                                                       "global_photons",
-                                                       "caustic_photons",
-                                                       "global_estimate",
-                                                       "caustic_estimate",
-                                                       "max_photon_depth",
-                                                       "final_gather",
-                                                       "shadow_samples",
-                                                       "samples_per_pixel",
-                                                       "irradiance_stride",
-                                                       "irradiance_cache",
-                                                       "sppm_passes",
-                                                       "sppm_photons",
-                                                       "seed"};
+/// photon's own global_settings items (POV-Ray does not know them), from the settings table.
+inline constexpr auto photon_keywords = photon_setting_items();
 inline constexpr std::string_view other_keywords[] = {"camera",
                                                       "global_settings",
                                                       "background",

@@ -48,8 +48,9 @@ inline Object Parser::parse_light(const Token& kw) {
         } else if (w == "radius" || w == "falloff") {
             SourceLocation at;
             const double a = parse_float("the angle in degrees after `" + w + "`", &at);
-            if (!(a >= 0 && a <= 180))
-                fail(at, "`" + w + "` must be an angle from 0 to 180 degrees, found " + format_number(a));
+            // POV-Ray takes any angle (it uses the cosine): `radius -90` turns the soft edge off.
+            if (!(a >= -180 && a <= 180))
+                fail(at, "`" + w + "` must be an angle from -180 to 180 degrees, found " + format_number(a));
             (w == "radius" ? spot.radius : spot.falloff) = a;
         } else if (w == "tightness") {
             spot.tightness = parse_nonnegative("`tightness`");

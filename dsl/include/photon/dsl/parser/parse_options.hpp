@@ -8,11 +8,17 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
+#include <cstdlib>
 #include <optional>
-#include <photon/version.hpp>
 #include <string>
+#include <string_view>
+#include <system_error>
 #include <vector>
 
+#include <photon/version.hpp>
+
+#include "../description.hpp"
 #include "../diagnostics.hpp"
 
 namespace photon::dsl {
@@ -29,6 +35,21 @@ struct AnimationClock {
     bool clock_on = false;
 };
 
+/// What POV-Ray's trace(), min_extent() and max_extent() ask of an object while the scene is
+/// read. The parser holds no geometry: the library answers (object_geometry.hpp's
+/// library_object_geometry(), which the CLI sets).
+struct ObjectGeometry {
+    struct Bounds {
+        Vector3 min, max;
+    };
+    struct Hit {
+        Vector3 point, normal;
+    };
+    std::function<Bounds(const Object&)> bounds;
+    /// The first hit of the ray origin + t direction, t > 0; nullopt when it misses.
+    std::function<std::optional<Hit>(const Object&, const Vector3& origin, const Vector3& direction)> trace;
+};
+
 struct ParseOptions {
     /// Searched for `#include` files after the including file's own directory.
     std::vector<std::filesystem::path> include_paths;
@@ -39,6 +60,8 @@ struct ParseOptions {
     /// Floats declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
     std::map<std::string, double> defines;
     DiagnosticSink diagnostics;
+    /// Answers trace(), min_extent() and max_extent(); without it they are an error.
+    std::shared_ptr<const ObjectGeometry> geometry;
     /// Values of POV-Ray's `image_width` and `image_height`.
     unsigned image_width = 800, image_height = 600;
     /// Values of `clock`, `clock_delta`, `frame_number`, ... (POV-Ray's +K options).
@@ -51,5 +74,29 @@ struct ParseOptions {
     std::uint64_t max_loop_iterations = 1'000'000;  ///< per #while loop
     std::size_t max_primitives = 10'000'000;        ///< objects and mesh triangles in the scene
 };
+
+/// Where POV-Ray's standard include files (colors.inc, textures.inc, ...) are looked for after
+/// the scene's own directory and the caller's paths: each directory of the environment variable
+/// PHOTON_INCLUDE_PATH (separated by `:`), then POV-Ray 3.7's install directories (Debian's
+/// povray-includes package puts them in /usr/share/povray-3.7/include) when they exist. photon
+/// ships no copies of them: POV-Ray's licence covers those files, and the installed ones match
+/// the POV-Ray a user compares with.
+[[nodiscard]] inline std::vector<std::filesystem::path> standard_include_paths() {
+    std::vector<std::filesystem::path> dirs;
+    if (const char* env = std::getenv("PHOTON_INCLUDE_PATH")) {
+        std::string_view rest(env);
+        while (!rest.empty()) {
+            const std::size_t colon = rest.find(':');
+            const std::string_view dir = rest.substr(0, colon);
+            if (!dir.empty()) dirs.emplace_back(std::string(dir));
+            rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+        }
+    }
+    for (const char* dir : {"/usr/share/povray-3.7/include", "/usr/local/share/povray-3.7/include"}) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(dir, ec)) dirs.emplace_back(dir);
+    }
+    return dirs;
+}
 
 }  // namespace photon::dsl

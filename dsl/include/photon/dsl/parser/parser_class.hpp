@@ -99,6 +99,7 @@ private:
                                            const SourceLocation& from);
     void directive_include(const Token& d);
     void include_from_reader(const Token& s);
+    void push_included_text(const Token& s, std::string text, const std::filesystem::path& key);
     void check_include_loop(const std::filesystem::path& canonical, const Token& s) const;
     Token raw_token();
     static std::string position(const SourceLocation& at);
@@ -140,12 +141,32 @@ private:
     Numeric parse_primary();
     Numeric parse_identifier_value(const Token& t);
 
-    // builtins.hpp, object_queries.hpp
+    // file_io.hpp
+    struct OpenFile {
+        std::string name, text;
+        std::size_t pos = 0;  ///< next character to #read
+        bool writing = false;
+    };
+    void assign_identifier(const std::string& name, ValueData v, const SourceLocation& at);
+    void directive_fopen(const Token& d);
+    void directive_fclose(const Token& d);
+    void directive_write(const Token& d);
+    void directive_read(const Token& d);
+    OpenFile& open_file(const Token& id, const std::string& directive);
+    void close_file(const std::string& id);
+
+    // splines.hpp
+    Spline parse_spline(const Token& kw);
+    Numeric parse_spline_call(const Token& id, const Spline& s);
+
+    // object_queries.hpp
+    Numeric parse_object_query(const Token& f);
+    Numeric parse_inside(const Token& f);
+
+    // builtins.hpp
     Numeric parse_function(const Token& f);
     Numeric parse_vector_builtin(const Token& f, const std::vector<Numeric>& args,
                                  const std::vector<SourceLocation>& at);
-    const Object& parse_object_argument(const std::string& function);
-    Numeric parse_object_query(const Token& f);
 
     // strings.hpp
     bool starts_string(const Token& t) const;
@@ -179,6 +200,7 @@ private:
     double to_float(const Numeric& n, const std::string& what, const SourceLocation& at) const;
     Vector3 to_vector(const Numeric& n, const std::string& what, const SourceLocation& at) const;
     static Color to_color(const Numeric& n);
+    Numeric parse_parameter_for(const std::string& what);
     double parse_float(const std::string& what, SourceLocation* where = nullptr);
     Vector3 parse_vector(const std::string& what, SourceLocation* where = nullptr);
     std::int64_t parse_integer(const std::string& what, double lo, double hi);
@@ -219,7 +241,8 @@ private:
 
     // settings.hpp
     void parse_global_settings(const Token& kw);
-    void parse_estimate(const Token& kw, EstimateDescription& e);
+    void parse_table_setting(const RenderSetting& s, const Token& kw);
+    void parse_settings_block(const Token& kw);
     void parse_pov_photons(const Token& kw);
 
     // statements.hpp
@@ -240,11 +263,13 @@ private:
     std::size_t statements_ = 0;
     unsigned depth_ = 0;
     int suppress_ = 0;
-    bool in_vector_ = false;
+    bool in_vector_ = false;  ///< comparisons need parentheses: in a vector or a block's parameter
     bool mentions_photon_version_ = false;
     RandomStreams random_;           ///< seed() and rand()
     std::optional<Token> pending_call_;  ///< see directive_declare
     std::uint64_t function_steps_ = 0;  ///< user-function evaluation so far, bounded by max_tokens
+    std::map<std::string, OpenFile> open_files_;        ///< by file identifier
+    std::map<std::string, std::string> written_files_;  ///< by file name: what #write wrote, in memory
 };
 
 }  // namespace photon::dsl::detail

@@ -1,33 +1,37 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// global_settings: POV-Ray's own items, its photons block, and photon's own settings.
+// global_settings: POV-Ray's own items, its photons block, and the items of the settings table
+// (settings_table.hpp: photon's own settings and POV-Ray's max_trace_level).
 
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
 
+// GLOBAL_SETTINGS: global_settings { {ITEM} }, ITEM one of POV-Ray's or a settings-table item
 inline void Parser::parse_global_settings(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     GlobalSettings& g = scene_.settings;
     if (!g.at.known()) g.at = kw.location;
-    PhotonSettings& p = g.photon;
     for (;;) {
         const Token t = peek();
         if (t.kind != TokenKind::identifier) break;
         const std::string& w = t.text;
-        const bool photon_own = one_of(w, photon_keywords);
-        if (!photon_own && !one_of(w, global_keywords)) break;
+        const RenderSetting* setting = find_setting_item("", w);
+        const bool block = is_settings_block(w);
+        const bool photon_own = (setting && !setting->povray) || block;
+        if (!setting && !block && !one_of(w, global_keywords)) break;
         next();
         g.written[w] = t.location;
         if (photon_own && !in_photon_guard())
             warn(t.location, "`" + w +
                                  "` is photon's own setting and POV-Ray stops at it: write it inside "
                                  "`#ifdef (photon_version) ... #end`");
-        auto count = [&](const std::string& what) { return std::uint64_t(parse_integer(what, 0, 1e12)); };
-        // The library's bounds (photon::SettingsLimits), so that they are reported where written.
-        auto positive = [&](const std::string& what, double hi) { return unsigned(parse_integer(what, 1, hi)); };
-        if (w == "assumed_gamma") {
+        if (setting) {
+            parse_table_setting(*setting, t);
+        } else if (block) {
+            parse_settings_block(t);
+        } else if (w == "assumed_gamma") {
             SourceLocation at;
             g.assumed_gamma = parse_float("`assumed_gamma`", &at);
             if (*g.assumed_gamma != 1.0)
@@ -35,8 +39,6 @@ inline void Parser::parse_global_settings(const Token& kw) {
                              ": photon reads every colour as linear (as with assumed_gamma 1.0)");
         } else if (w == "ambient_light") {
             g.ambient_light = to_color(parse_expression_for("the ambient light colour")).rgb;
-        } else if (w == "max_trace_level") {
-            g.max_trace_level = unsigned(parse_integer("`max_trace_level`", 1, 256));
         } else if (w == "adc_bailout") {
             g.adc_bailout = parse_nonnegative("`adc_bailout`");
         } else if (w == "radiosity") {
@@ -46,8 +48,7 @@ inline void Parser::parse_global_settings(const Token& kw) {
             parse_pov_photons(t);
         } else if (w == "subsurface") {
             fail(t.location, "`subsurface` is not supported by photon");
-        } else if (w == "charset" || w == "noise_generator" || w == "number_of_waves" || w == "max_intersections" ||
-                   w == "irid_wavelength" || w == "hf_gray_16" || w == "mm_per_unit") {
+        } else {  // charset, noise_generator, number_of_waves, max_intersections, irid_wavelength, hf_gray_16, mm_per_unit
             if (w == "irid_wavelength")
                 parse_color("the wavelengths");
             else if (w == "charset")
@@ -56,85 +57,73 @@ inline void Parser::parse_global_settings(const Token& kw) {
                 parse_optional_bool();
             else
                 parse_float("`" + w + "`");
-        } else if (w == "width") {
-            p.width = unsigned(parse_integer("`width`", 1, 65536));
-        } else if (w == "height") {
-            p.height = unsigned(parse_integer("`height`", 1, 65536));
-        } else if (w == "render_mode") {
-            const Token m = next();
-            const std::string mode =
-                m.kind == TokenKind::string ? m.text : (m.kind == TokenKind::identifier ? m.text : "");
-            if (mode != "rt" && mode != "pm" && mode != "pm_direct" && mode != "pm-direct" && mode != "sppm")
-                fail_expected("`rt`, `pm`, `pm_direct` or `sppm` after `render_mode`", m);
-            p.render_mode = mode == "pm-direct" ? "pm_direct" : mode;
-        } else if (w == "global_photons") {
-            p.global_photons = count("`global_photons`");
-        } else if (w == "caustic_photons") {
-            p.caustic_photons = count("`caustic_photons`");
-        } else if (w == "global_estimate" || w == "caustic_estimate") {
-            parse_estimate(t, w == "global_estimate" ? p.global_estimate : p.caustic_estimate);
-        } else if (w == "max_photon_depth") {
-            p.max_photon_depth = positive("`max_photon_depth`", 1e4);
-        } else if (w == "final_gather") {
-            p.final_gather = unsigned(parse_integer("`final_gather`", 0, 1e6));
-        } else if (w == "shadow_samples") {
-            p.shadow_samples = positive("`shadow_samples`", 1e6);
-        } else if (w == "samples_per_pixel") {
-            p.samples_per_pixel = positive("`samples_per_pixel`", 1e6);
-        } else if (w == "irradiance_stride") {
-            p.irradiance_stride = unsigned(parse_integer("`irradiance_stride`", 0, 1e6));
-        } else if (w == "irradiance_cache") {
-            SourceLocation at;
-            const double a = parse_float("`irradiance_cache`", &at);
-            if (!(a >= 0 && a <= 1)) fail(at, "`irradiance_cache` error must be from 0 (off) to 1, found " + format_number(a));
-            p.irradiance_cache = a;
-        } else if (w == "sppm_passes") {
-            p.sppm_passes = positive("`sppm_passes`", 1e6);
-        } else if (w == "sppm_photons") {
-            p.sppm_photons = std::uint64_t(parse_integer("`sppm_photons`", 1, 2147483648.0));
-        } else {  // seed
-            p.seed = count("`seed`");
         }
     }
-    close_block(
-        kw,
-        "a global setting (assumed_gamma, ambient_light, max_trace_level, adc_bailout, radiosity, photons"
-        ", or photon's own: global_photons, caustic_photons, global_estimate, ...)",
-        {"assumed_gamma", "ambient_light", "max_trace_level", "adc_bailout", "radiosity", "photons", "width",
-         "height", "render_mode", "global_photons", "caustic_photons", "global_estimate", "caustic_estimate",
-         "max_photon_depth", "final_gather", "shadow_samples", "samples_per_pixel", "irradiance_stride",
-         "irradiance_cache", "sppm_passes", "sppm_photons", "seed"});
+    static const std::vector<std::string_view> known = [] {
+        std::vector<std::string_view> k = {"assumed_gamma", "ambient_light", "max_trace_level", "adc_bailout",
+                                           "radiosity", "photons"};
+        k.insert(k.end(), photon_keywords.begin(), photon_keywords.end());
+        return k;
+    }();
+    close_block(kw,
+                "a global setting (assumed_gamma, ambient_light, max_trace_level, adc_bailout, radiosity, photons"
+                ", or photon's own: global_photons, caustic_photons, global_estimate, ...)",
+                known);
 }
 
-inline void Parser::parse_estimate(const Token& kw, EstimateDescription& e) {
+// SETTING_VALUE: WHOLE_NUMBER | FLOAT | MODE_NAME, as the settings table says for the item just read
+inline void Parser::parse_table_setting(const RenderSetting& s, const Token& kw) {
+    // Messages name a top-level item by its keyword, an item of a block by what it is.
+    const std::string subject = s.block.empty() ? "`" + kw.text + "`" : std::string(s.noun);
+    SettingValue v;
+    if (s.kind == SettingKind::integer) {
+        v = std::uint64_t(parse_integer(subject, s.lo, s.hi));
+    } else if (s.kind == SettingKind::real) {
+        SourceLocation at;
+        const double x = parse_float(subject, &at);
+        if (const auto problem = setting_value_problem(s, x)) fail(at, subject + " " + *problem);
+        v = x;
+    } else {
+        const Token m = next();
+        const RenderModeName* mode = m.kind == TokenKind::string || m.kind == TokenKind::identifier
+                                         ? find_render_mode(m.text)
+                                         : nullptr;
+        if (!mode || !mode->in_scene) {
+            std::vector<std::string> names;  // each mode once, as photon writes it
+            for (const RenderModeName& n : render_mode_names)
+                if (n.in_scene && render_mode_name(n.mode) == n.name) names.push_back(std::string("`").append(n.name).append("`"));
+            std::string list;
+            for (std::size_t i = 0; i < names.size(); ++i)
+                list.append(i == 0 ? "" : i + 1 == names.size() ? " or " : ", ").append(names[i]);
+            fail_expected(list + " after `" + kw.text + "`", m);
+        }
+        v = std::string(render_mode_name(mode->mode));
+    }
+    scene_.settings.render[std::string(s.key)] = WrittenSetting{std::move(v), kw.location};
+}
+
+// SETTINGS_BLOCK: global_estimate { {ITEM} } | caustic_estimate { {ITEM} }, ITEM one of the block's in the table
+inline void Parser::parse_settings_block(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     for (;;) {
         const Token t = peek();
-        if (t.is_identifier("count")) {
-            next();
-            e.count = unsigned(parse_integer("the photons per estimate after `count`", 1, 1e6));
-        } else if (t.is_identifier("radius")) {
-            next();
-            SourceLocation at;
-            e.radius = parse_float("the maximum radius after `radius`", &at);
-            if (!(*e.radius > 0))
-                fail(at, "the estimate radius must be positive, found " + format_number(*e.radius));
-        } else if (t.is_identifier("flatten")) {
-            next();
-            SourceLocation at;
-            e.flatten = parse_float("`flatten`", &at);
-            if (!(*e.flatten >= 1)) fail(at, "`flatten` must be >= 1, found " + format_number(*e.flatten));
-        } else if (t.is_identifier("probes")) {
-            next();
-            e.probes = unsigned(parse_integer("`probes`", 0, 1024));
-        } else {
-            break;
-        }
+        const RenderSetting* s = t.kind == TokenKind::identifier ? find_setting_item(kw.text, t.text) : nullptr;
+        if (!s) break;
+        next();
+        parse_table_setting(*s, t);
     }
-    close_block(kw, "`count`, `radius`, `flatten` or `probes`", {"count", "radius", "flatten", "probes"});
+    std::vector<std::string_view> items;
+    for (const RenderSetting& s : render_settings_table)
+        if (s.block == kw.text) items.push_back(s.keyword);
+    std::string list;
+    for (std::size_t i = 0; i < items.size(); ++i)
+        list.append(i == 0 ? "" : i + 1 == items.size() ? " or " : ", ").append("`").append(items[i]).append("`");
+    close_block(kw, list, items);
 }
 
+// POV_PHOTONS: photons { {spacing F | count N | gather MIN, MAX | max_trace_level N | radius R[, ...] | ...} }
+// Not in the settings table: its items map onto photon's caustic settings with other meanings.
 inline void Parser::parse_pov_photons(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);

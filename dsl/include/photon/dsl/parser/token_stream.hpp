@@ -51,6 +51,11 @@ inline void Parser::directive_include(const Token& d) {
         fail(s.location, "includes nested too deep: more than " + std::to_string(options_.max_include_depth) +
                              " files open at once");
     namespace fs = std::filesystem;
+    // A file the scene wrote itself (`#fopen ... write`) is kept in memory: read it from there.
+    if (const auto it = written_files_.find(s.text); it != written_files_.end()) {
+        push_included_text(s, it->second, fs::path("<written>") / s.text);
+        return;
+    }
     if (options_.read_include) {
         include_from_reader(s);
         return;
@@ -74,7 +79,13 @@ inline void Parser::directive_include(const Token& d) {
         std::string where;
         for (const auto& c : candidates)
             where += (where.empty() ? "" : ", ") + c.parent_path().lexically_normal().string();
-        fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")");
+        // POV-Ray's standard includes are the usual miss: say where photon finds them.
+        const bool pov_include = name.extension() == ".inc";
+        fail(s.location, "cannot find the include file \"" + s.text + "\" (looked in " + where + ")" +
+                             (pov_include ? "; POV-Ray's standard includes come with POV-Ray (Debian: povray-includes, "
+                                            "read from /usr/share/povray-3.7/include), or name their folder with -I "
+                                            "or PHOTON_INCLUDE_PATH"
+                                          : ""));
     }
     const fs::path canonical = weakly_canonical(found);
     check_include_loop(canonical, s);
@@ -91,11 +102,16 @@ inline void Parser::directive_include(const Token& d) {
 /// `#include` through ParseOptions::read_include: the name alone identifies the file.
 inline void Parser::include_from_reader(const Token& s) {
     const std::filesystem::path key = std::filesystem::path("<memory>") / s.text;
-    check_include_loop(key, s);
     std::optional<std::string> text = options_.read_include(s.text);
     if (!text) fail(s.location, "cannot find the include file \"" + s.text + "\"");
-    if (text->size() > options_.max_file_bytes) fail(s.location, too_large_message(text->size()));
-    auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(*text)});
+    push_included_text(s, std::move(*text), key);
+}
+
+/// Reads `text` in place of the `#include` at `s`; `key` identifies it for include loops.
+inline void Parser::push_included_text(const Token& s, std::string text, const std::filesystem::path& key) {
+    check_include_loop(key, s);
+    if (text.size() > options_.max_file_bytes) fail(s.location, too_large_message(text.size()));
+    auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(text)});
     scene_.files.push_back(file);
     files_.push_back({Lexer(file), key});
     scopes_.emplace_back();

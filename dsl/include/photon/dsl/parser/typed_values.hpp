@@ -24,16 +24,27 @@ inline Color Parser::to_color(const Numeric& n) {
     return {{n.at(0), n.at(1), n.at(2)}, n.at(3), n.at(4)};
 }
 
+/// A float or vector parameter of a block: POV-Ray reads it at the level of sums (Parse_Float and
+/// Parse_Vector call Parse_Rel_Factor), so comparisons need parentheses there and
+/// `box { <0,0,0><1,1,1> }` is two corners, not `<0,0,0> < <1,1,1>`.
+inline Numeric Parser::parse_parameter_for(const std::string& what) {
+    const bool saved = in_vector_;
+    in_vector_ = true;
+    Numeric n = parse_expression_for(what);
+    in_vector_ = saved;
+    return n;
+}
+
 inline double Parser::parse_float(const std::string& what, SourceLocation* where) {
     const SourceLocation at = peek().location;
     if (where) *where = at;
-    return to_float(parse_expression_for(what), what, at);
+    return to_float(parse_parameter_for(what), what, at);
 }
 
 inline Vector3 Parser::parse_vector(const std::string& what, SourceLocation* where) {
     const SourceLocation at = peek().location;
     if (where) *where = at;
-    return to_vector(parse_expression_for(what), what, at);
+    return to_vector(parse_parameter_for(what), what, at);
 }
 
 /// A whole number in [lo, hi] (fractions are truncated, as POV-Ray does).
@@ -60,9 +71,11 @@ inline bool Parser::starts_expression(const Token& t) const {
     if (t.kind == TokenKind::number) return true;
     if (t.kind == TokenKind::symbol) return one_of(t.text, {"(", "<", "-", "+", "!"});
     if (t.kind != TokenKind::identifier) return false;
-    if (one_of(t.text, constants) || one_of(t.text, functions) || one_of(t.text, color_keywords)) return true;
+    if (one_of(t.text, constants) || one_of(t.text, functions) || one_of(t.text, object_query_functions) ||
+        one_of(t.text, color_keywords))
+        return true;
     const Value* v = lookup(t.text);
-    return v && (std::holds_alternative<Numeric>(v->data) ||
+    return v && (std::holds_alternative<Numeric>(v->data) || std::holds_alternative<Spline>(v->data) ||
                  std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data));
 }
 

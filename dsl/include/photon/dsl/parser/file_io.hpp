@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// POV-Ray's data-file directives: #fopen, #read, #write, #fclose. A file the scene writes is
+// kept in memory for the rest of the read (an `#include` or `#fopen ... read` of that name finds
+// it there) and never reaches the disk: reading a scene has no side effects, and POV-Ray's own
+// idiom of writing text and including it (strings.inc's Parse_String) still works.
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+/// POV-Ray's `%g`, as #write prints numbers.
+inline std::string pov_g(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+/// Sets `name` where it is visible (the innermost scope that has it), else declares it globally.
+inline void Parser::assign_identifier(const std::string& name, ValueData v, const SourceLocation& at) {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+        if (auto found = it->find(name); found != it->end()) {
+            found->second = Value{std::move(v), at};
+            return;
+        }
+    declare_global(name, std::move(v), at);
+}
+
+// FOPEN: #fopen FILE_ID "name" read | write | append
+inline void Parser::directive_fopen(const Token& d) {
+    const Token id = next();
+    if (id.kind != TokenKind::identifier || is_reserved(id.text))
+        fail_expected("an identifier for the file after `#fopen`", id);
+    const Token name = next();
+    if (name.kind != TokenKind::string) fail_expected("a file name in double quotes after `#fopen " + id.text + "`", name);
+    const Token mode = next();
+    if (!mode.is_identifier("read") && !mode.is_identifier("write") && !mode.is_identifier("append"))
+        fail_expected("`read`, `write` or `append` after the file name", mode);
+    OpenFile f;
+    f.name = name.text;
+    f.writing = mode.text != "read";
+    if (mode.text == "write") written_files_[f.name].clear();
+    if (!f.writing) {
+        if (const auto it = written_files_.find(f.name); it != written_files_.end()) {
+            f.text = it->second;
+        } else if (options_.read_include) {
+            auto text = options_.read_include(f.name);
+            if (!text) fail(name.location, "cannot find the data file \"" + f.name + "\"");
+            f.text = std::move(*text);
+        } else {
+            namespace fs = std::filesystem;
+            std::vector<fs::path> candidates{files_.back().path.parent_path() / f.name};
+            for (const auto& dir : options_.include_paths) candidates.push_back(dir / f.name);
+            std::error_code ec;
+            const auto found = std::find_if(candidates.begin(), candidates.end(),
+                                            [&](const fs::path& c) { return fs::is_regular_file(c, ec); });
+            if (found == candidates.end()) fail(name.location, "cannot find the data file \"" + f.name + "\"");
+            f.text = load(*found, f.name, name.location)->text;
+        }
+    }
+    (void)d;
+    open_files_[id.text] = std::move(f);
+    assign_identifier(id.text, std::string("file \"" + name.text + "\""), id.location);
+}
+
+inline Parser::OpenFile& Parser::open_file(const Token& id, const std::string& directive) {
+    const auto it = id.kind == TokenKind::identifier ? open_files_.find(id.text) : open_files_.end();
+    if (it == open_files_.end()) fail_expected("a file opened with `#fopen` in `#" + directive + "`", id);
+    return it->second;
+}
+
+inline void Parser::close_file(const std::string& id) {
+    open_files_.erase(id);
+    for (auto& scope : scopes_) scope.erase(id);
+}
+
+// FCLOSE: #fclose FILE_ID
+inline void Parser::directive_fclose(const Token& d) {
+    const Token id = next();
+    if (id.kind != TokenKind::identifier) fail_expected("a file identifier after `#fclose`", id);
+    (void)d;
+    if (open_files_.count(id.text)) close_file(id.text);  // closing a closed file is harmless, as in POV-Ray
+}
+
+// WRITE: #write ( FILE_ID , ITEM [, ITEM]... )   ITEM: STRING | FLOAT | VECTOR
+inline void Parser::directive_write(const Token& d) {
+    ++suppress_;
+    expect_symbol("(", "after `#write`");
+    const Token id = next();
+    OpenFile& f = open_file(id, "write");
+    if (!f.writing) fail(id.location, "cannot #write to \"" + f.name + "\": it is open for reading");
+    std::string out;
+    while (accept_symbol(",")) {
+        const Token& t = peek();
+        if (t.kind == TokenKind::identifier &&
+            one_of(t.text, {"uint8", "sint8", "uint16be", "uint16le", "sint16be", "sint16le", "sint32be", "sint32le"}))
+            fail(t.location, "binary `#write` (`" + t.text + "`) is not supported by photon: write text");
+        if (t.kind == TokenKind::string) {
+            out += next().text;
+            continue;
+        }
+        if (t.kind == TokenKind::identifier)
+            if (const Value* v = lookup(t.text); v && std::holds_alternative<std::string>(v->data)) {
+                next();
+                out += std::get<std::string>(v->data);
+                continue;
+            }
+        const Numeric n = parse_expression_for("a string, number or vector to #write");
+        if (n.dim == 0) {
+            out += pov_g(n.c[0]);
+        } else {
+            out += "<";
+            for (int i = 0; i < n.dim; ++i) out += (i ? "," : "") + pov_g(n.c[std::size_t(i)]);
+            out += "> ";
+        }
+    }
+    expect_symbol(")", "to close `#write`");
+    --suppress_;
+    (void)d;
+    std::string& file = written_files_[f.name];
+    if (file.size() + out.size() > options_.max_file_bytes)
+        fail(id.location, "#write: \"" + f.name + "\" would grow past " + std::to_string(options_.max_file_bytes) +
+                              " bytes");
+    file += out;
+}
+
+// READ: #read ( FILE_ID , IDENTIFIER [, IDENTIFIER]... ). At the end of the file the file
+// identifier becomes undefined (POV-Ray's `#while (defined(F)) #read (F, V) ... #end`).
+inline void Parser::directive_read(const Token& d) {
+    ++suppress_;
+    expect_symbol("(", "after `#read`");
+    const Token id = next();
+    OpenFile& f = open_file(id, "read");
+    if (f.writing) fail(id.location, "cannot #read from \"" + f.name + "\": it is open for writing");
+    bool at_end = false;
+    while (accept_symbol(",")) {
+        const Token var = next();
+        if (var.kind != TokenKind::identifier || is_reserved(var.text))
+            fail_expected("an identifier to read into", var);
+        if (at_end) continue;
+        // Items are separated by commas and white space, as POV-Ray writes them.
+        auto skip = [&] {
+            while (f.pos < f.text.size() && (std::isspace(static_cast<unsigned char>(f.text[f.pos])) || f.text[f.pos] == ','))
+                ++f.pos;
+        };
+        auto number = [&]() -> std::optional<double> {
+            skip();
+            const char* begin = f.text.c_str() + f.pos;
+            char* end = nullptr;
+            const double v = std::strtod(begin, &end);
+            if (end == begin || !std::isfinite(v)) return std::nullopt;
+            f.pos += std::size_t(end - begin);
+            return v;
+        };
+        skip();
+        if (f.pos >= f.text.size()) {
+            at_end = true;
+            continue;
+        }
+        const char c = f.text[f.pos];
+        if (c == '"') {
+            std::string s;
+            ++f.pos;
+            while (f.pos < f.text.size() && f.text[f.pos] != '"') {
+                if (f.text[f.pos] == '\\' && f.pos + 1 < f.text.size()) ++f.pos;
+                s += f.text[f.pos++];
+            }
+            if (f.pos >= f.text.size()) fail(var.location, "#read: unterminated string in \"" + f.name + "\"");
+            ++f.pos;
+            assign_identifier(var.text, s, var.location);
+        } else if (c == '<') {
+            ++f.pos;
+            Numeric n;
+            while (const auto v = number()) {
+                if (n.dim == 5) fail(var.location, "#read: a vector in \"" + f.name + "\" has more than 5 components");
+                n.c[std::size_t(n.dim++)] = *v;
+            }
+            skip();
+            if (f.pos >= f.text.size() || f.text[f.pos] != '>' || n.dim < 2)
+                fail(var.location, "#read: expected a vector `<a, b, ...>` in \"" + f.name + "\"");
+            ++f.pos;
+            assign_identifier(var.text, n, var.location);
+        } else if (const auto v = number()) {
+            assign_identifier(var.text, Numeric::scalar(*v), var.location);
+        } else {
+            fail(var.location, "#read: expected a number, a vector or a string in \"" + f.name + "\", found `" +
+                                   std::string(1, c) + "`");
+        }
+    }
+    expect_symbol(")", "to close `#read`");
+    --suppress_;
+    (void)d;
+    // POV-Ray undefines the file as soon as its last item is read.
+    while (f.pos < f.text.size() && (std::isspace(static_cast<unsigned char>(f.text[f.pos])) || f.text[f.pos] == ','))
+        ++f.pos;
+    if (at_end || f.pos >= f.text.size()) close_file(id.text);
+}
+
+}  // namespace photon::dsl::detail
