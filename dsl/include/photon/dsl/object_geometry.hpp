@@ -24,7 +24,8 @@ inline DefaultScene<double> scene_of(const Object& obj) {
     desc.at = obj.at;
     Warnings quiet(nullptr);
     DefaultScene<double> scene;
-    Builder<double> builder(desc, quiet);
+    Builder<double> builder(desc, quiet, BuildOptions{}.max_primitives);
+    builder.read_files();
     builder.add_all(scene);
     scene.commit();
     return scene;

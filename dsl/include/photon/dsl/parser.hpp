@@ -21,6 +21,8 @@
 #include "parser/file_io.hpp"
 #include "parser/expressions.hpp"
 #include "parser/builtins.hpp"
+#include "parser/strings.hpp"
+#include "parser/user_functions.hpp"
 #include "parser/object_queries.hpp"
 #include "parser/splines.hpp"
 #include "parser/typed_values.hpp"

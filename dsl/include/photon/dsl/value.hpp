@@ -2,7 +2,8 @@
 #pragma once
 // Values of POV-Ray's expressions and declarations: numbers, vectors and colours (one numeric
 // type of 0 to 5 components, as POV-Ray promotes between them), strings, the declarable
-// blocks (pigment, finish, interior, texture, transform, object, camera, material) and arrays.
+// blocks (pigment, finish, interior, texture, transform, object, camera, material), arrays,
+// splines and user functions.
 
 #include <array>
 #include <charconv>
@@ -76,6 +77,8 @@ struct MaterialBlock {
     SourceLocation at;
 };
 
+struct UserFunction;  // user_function.hpp
+
 struct Value;
 
 /// `array[N][M]...`: the sizes, and the elements in row-major order, each unset until assigned.
@@ -96,7 +99,7 @@ struct Array {
 };
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
-                               CameraDescription, MaterialBlock, Array, Spline>;
+                               CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -139,8 +142,10 @@ struct Value {
             return "a material";
         case 10:
             return "an array";
-        default:
+        case 11:
             return "a spline";
+        default:
+            return "a function";
     }
 }
 

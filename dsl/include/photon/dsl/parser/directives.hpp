@@ -82,8 +82,7 @@ inline void Parser::directive(const Token& d) {
     } else if (name == "for") {
         directive_for(d);
     } else if (name == "warning" || name == "debug" || name == "error") {
-        const Token s = next();
-        if (s.kind != TokenKind::string) fail_expected("a string in double quotes after `#" + name + "`", s);
+        const Token s = parse_string_token("a string after `#" + name + "`");
         if (name == "error") fail(d.location, "#error: " + s.text);
         if (name == "warning") warn(d.location, "#warning: " + s.text);
     } else if (name == "default") {
@@ -111,7 +110,8 @@ inline bool Parser::is_reserved(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
            one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
-           one_of(w, other_keywords) || one_of(w, array_keywords);
+           one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, string_functions) ||
+           one_of(w, function_words);
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -161,6 +161,7 @@ inline void Parser::directive_declare(const Token& d, bool local) {
                               position_in(m->second->at, id.location) + "); `#undef` it first");
     expect_symbol("=", "after `#" + d.text + " " + id.text + "`");
     bool needs_semicolon = false;
+    declaring_ = id.text;  // a `function { }` knows its name, for messages and recursion
     ValueData v = parse_rvalue("the value of `" + id.text + "`", needs_semicolon);
     const bool semicolon_optional = !needs_semicolon || std::holds_alternative<std::string>(v);
     assign(id, std::move(v), local);  // before the next token, which may use it (a macro call's argument)
@@ -191,6 +192,7 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     if (w == "camera") return parse_camera(next());
     if (w == "array") return parse_array(next());
     if (w == "spline") return parse_spline(next());
+    if (w == "function") return parse_user_function(next(), declaring_);
     if (w == "material") {
         Object holder;
         const Token kw = next();
@@ -199,6 +201,13 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     }
     if (one_of(w, object_keywords)) return parse_object(next());
     if (one_of(w, unsupported_objects)) unsupported_object(t);
+    if (const Value* v = lookup(w); v && std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data)) {
+        const ValueData f = v->data;
+        const Token name = next();  // `#declare G = F` copies the function, `F(...)` calls it
+        if (!peek().is_symbol("(")) return f;
+        pending_call_ = name;
+        return std::nullopt;
+    }
     if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
         next();
         return v->data;
@@ -216,10 +225,7 @@ inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semic
         return std::move(*block);
     }
     needs_semicolon = true;
-    if (t.kind == TokenKind::string) {
-        next();
-        return t.text;
-    }
+    if (!pending_call_ && starts_string(t)) return parse_string_expression(what);
     suppress_.push_back(home);
     const bool saved = in_vector_;
     in_vector_ = false;

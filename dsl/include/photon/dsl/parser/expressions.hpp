@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Expressions: POV-Ray's operator grammar over floats, vectors and colours, with identifiers and
-// constants.
+// Expressions: POV-Ray's operator grammar over floats, vectors and colours, with identifiers,
+// constants (the animation clock among them) and calls of user functions.
 
 #include "parser_class.hpp"
 
@@ -159,6 +159,12 @@ inline Numeric Parser::parse_postfix() {
 }
 
 inline Numeric Parser::parse_primary() {
+    if (pending_call_) {  // a function call whose name #declare has read already
+        const Token f = std::move(*pending_call_);
+        pending_call_.reset();
+        const auto callee = std::get<std::shared_ptr<const UserFunction>>(lookup(f.text)->data);
+        return call_function_value(f, *callee);
+    }
     const Token t = peek();
     if (t.kind == TokenKind::number) {
         next();
@@ -223,7 +229,15 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         if (w == "true" || w == "yes" || w == "on") return Numeric::scalar(1);
         if (w == "false" || w == "no" || w == "off") return Numeric::scalar(0);
         if (w == "version") return Numeric::scalar(version_);
-        if (w == "clock") return Numeric::scalar(0);
+        const AnimationClock& a = options_.animation;
+        if (w == "clock") return Numeric::scalar(a.clock);
+        if (w == "clock_on") return Numeric::scalar(a.clock_on ? 1.0 : 0.0);
+        if (w == "clock_delta") return Numeric::scalar(a.clock_delta);
+        if (w == "initial_clock") return Numeric::scalar(a.initial_clock);
+        if (w == "final_clock") return Numeric::scalar(a.final_clock);
+        if (w == "frame_number") return Numeric::scalar(a.frame_number);
+        if (w == "initial_frame") return Numeric::scalar(a.initial_frame);
+        if (w == "final_frame") return Numeric::scalar(a.final_frame);
         if (w == "image_width") return Numeric::scalar(options_.image_width);
         return Numeric::scalar(options_.image_height);
     }
@@ -235,6 +249,10 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         if (const auto* n = std::get_if<Numeric>(&v->data)) {
             next();
             return *n;
+        }
+        if (const auto* f = std::get_if<std::shared_ptr<const UserFunction>>(&v->data)) {
+            const auto keep = *f;  // the call may redeclare the identifier (a directive in its arguments)
+            return call_function_value(next(), *keep);
         }
         if (const auto* sp = std::get_if<Spline>(&v->data)) {
             const Spline spline = *sp;  // the call may redeclare it

@@ -71,13 +71,25 @@ inline constexpr std::string_view statement_keywords[] = {
     "smooth_triangle", "mesh",         "union",           "merge",      "object"};
 inline constexpr std::string_view color_keywords[] = {"color", "colour", "rgb",  "rgbf",   "rgbt",    "rgbft",
                                                       "red",   "green",  "blue", "filter", "transmit"};
-inline constexpr std::string_view constants[] = {"pi", "tau", "x",       "y",     "z",           "t",
-                                                 "u",  "v",   "true",    "yes",   "on",          "false",
-                                                 "no", "off", "version", "clock", "image_width", "image_height"};
+inline constexpr std::string_view constants[] = {
+    "pi",         "tau",          "x",           "y",           "z",            "t",             "u",
+    "v",          "true",         "yes",         "on",          "false",        "no",            "off",
+    "version",    "clock",        "image_width", "image_height", "clock_on",    "clock_delta",   "initial_clock",
+    "final_clock", "frame_number", "initial_frame", "final_frame"};
+/// Built-ins whose value is a number or a vector (string functions below).
 inline constexpr std::string_view functions[] = {
-    "abs", "acos",  "asin", "atan", "atan2", "ceil",   "cos",  "cosh",    "defined",    "degrees", "div",
-    "exp", "floor", "int",  "ln",   "log",   "max",    "min",  "mod",     "pow",        "radians", "select",
-    "sin", "sinh",  "sqrt", "tan",  "tanh",  "vcross", "vdot", "vlength", "vnormalize", "vrotate"};
+    "abs",         "acos",        "acosh",      "asin",        "asinh",      "atan",        "atanh",
+    "atan2",       "bitwise_and", "bitwise_or", "bitwise_xor", "ceil",       "cos",         "cosh",
+    "defined",     "degrees",     "div",        "exp",         "floor",      "int",         "ln",
+    "log",         "max",         "min",        "mod",         "pow",        "radians",     "select",
+    "sin",         "sinh",        "sqrt",       "tan",         "tanh",       "vcross",      "vdot",
+    "vlength",     "vnormalize",  "vrotate",    "vaxis_rotate", "vturbulence", "rand",      "seed",
+    "strlen",      "val",         "asc",        "strcmp",     "file_exists", "inside"};
+/// Built-ins whose value is a string.
+inline constexpr std::string_view string_functions[] = {"concat", "str",    "chr",    "substr",
+                                                        "strupr", "strlwr", "vstr",   "datetime"};
+/// Words that only mean something inside `function { }`.
+inline constexpr std::string_view function_words[] = {"function", "internal", "sum", "prod"};
 /// Functions that ask an object's geometry (parser/object_queries.hpp).
 inline constexpr std::string_view object_query_functions[] = {"trace", "min_extent", "max_extent"};
 /// Kinds of `spline { }` (parser/splines.hpp).

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // POV-Ray's functions that ask an object's geometry while the scene is read: trace(),
-// min_extent() and max_extent(). The parser holds no geometry; ParseOptions::geometry answers.
+// min_extent() and max_extent() (the parser holds no geometry; ParseOptions::geometry answers),
+// and inside(), which the description answers for the solids photon has.
 
 #include "parser_class.hpp"
 
@@ -52,6 +53,53 @@ inline Numeric Parser::parse_object_query(const Token& f) {
     }
     in_vector_ = saved;
     return result;
+}
+
+/// POV-Ray's Inside test: solids contain their inside (boundary included, within POV-Ray's
+/// tolerance); triangles and meshes without inside_vector contain nothing.
+[[nodiscard]] inline bool object_contains(const Object& o, const Vector3& world) {
+    constexpr double tolerance = 1e-10;
+    const Vector3 p = o.transform.inverse().point(world);
+    return std::visit(
+        [&](const auto& s) -> bool {
+            using S = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<S, SphereShape>) {
+                const Vector3 d = p - s.center;
+                return glm::dot(d, d) < s.radius * s.radius;
+            } else if constexpr (std::is_same_v<S, BoxShape>) {
+                const Vector3 lo = glm::min(s.corner1, s.corner2), hi = glm::max(s.corner1, s.corner2);
+                for (int k = 0; k < 3; ++k)
+                    if (p[k] < lo[k] - tolerance || p[k] > hi[k] + tolerance) return false;
+                return true;
+            } else if constexpr (std::is_same_v<S, PlaneShape>) {
+                return glm::dot(p, glm::normalize(s.normal)) - s.distance < tolerance;
+            } else if constexpr (std::is_same_v<S, UnionShape>) {
+                for (const auto& child : s.children)
+                    if (object_contains(*child, p)) return true;
+                return false;
+            } else {
+                return false;
+            }
+        },
+        o.shape);
+}
+
+// INSIDE: inside ( OBJECT_ID , VECTOR )
+inline Numeric Parser::parse_inside(const Token& f) {
+    expect_symbol("(", "after `inside`");
+    const bool saved = in_vector_;
+    in_vector_ = false;
+    const Token id = next();
+    const Value* v = id.kind == TokenKind::identifier ? lookup(id.text) : nullptr;
+    if (!v || !std::holds_alternative<Object>(v->data) || std::holds_alternative<LightSource>(std::get<Object>(v->data).shape))
+        fail_expected("an object identifier as the first argument of `inside`", id);
+    const Object obj = std::get<Object>(v->data);
+    expect_symbol(",", "after the object of `inside`");
+    const Vector3 p = parse_vector("a point as argument 2 of `inside`");
+    expect_symbol(")", "to close the arguments of `inside`");
+    in_vector_ = saved;
+    (void)f;
+    return Numeric::scalar(object_contains(obj, p) ? 1.0 : 0.0);
 }
 
 }  // namespace photon::dsl::detail

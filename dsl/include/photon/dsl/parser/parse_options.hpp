@@ -27,6 +27,14 @@ namespace photon::dsl {
 /// `#ifdef (photon_version)` selects photon's own settings (POV-Ray skips them).
 inline constexpr double photon_version = double(PHOTON_VERSION_MAJOR) + double(PHOTON_VERSION_MINOR) / 10.0;
 
+/// POV-Ray's animation identifiers. The defaults are POV-Ray's without animation options (a
+/// still image): every value 0, clock_on false.
+struct AnimationClock {
+    double clock = 0, clock_delta = 0, initial_clock = 0, final_clock = 0;
+    double frame_number = 0, initial_frame = 0, final_frame = 0;
+    bool clock_on = false;
+};
+
 /// What POV-Ray's trace(), min_extent() and max_extent() ask of an object while the scene is
 /// read. The parser holds no geometry: the library answers (object_geometry.hpp's
 /// library_object_geometry(), which the CLI sets).
@@ -56,6 +64,8 @@ struct ParseOptions {
     std::shared_ptr<const ObjectGeometry> geometry;
     /// Values of POV-Ray's `image_width` and `image_height`.
     unsigned image_width = 800, image_height = 600;
+    /// Values of `clock`, `clock_delta`, `frame_number`, ... (POV-Ray's +K options).
+    AnimationClock animation;
 
     std::size_t max_file_bytes = std::size_t(64) << 20;
     unsigned max_include_depth = 32;

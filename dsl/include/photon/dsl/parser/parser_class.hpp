@@ -25,9 +25,11 @@
 #include "../description.hpp"
 #include "../diagnostics.hpp"
 #include "../lexer.hpp"
+#include "../user_function.hpp"
 #include "../value.hpp"
 #include "keywords.hpp"
 #include "parse_options.hpp"
+#include "random_streams.hpp"
 
 namespace photon::dsl::detail {
 
@@ -97,6 +99,13 @@ private:
         ~ReadingName() { --p.reading_name_; }
         ReadingName(const ReadingName&) = delete;
         ReadingName& operator=(const ReadingName&) = delete;
+    };
+    /// A function body being compiled: its slots by name (parameters, sum/prod variables in
+    /// scope) and each node's height, to bound the evaluation's recursion.
+    struct FunctionScope {
+        UserFunction& f;
+        std::vector<std::pair<std::string, std::uint32_t>> names;
+        std::vector<std::uint32_t> heights;
     };
     struct Nest {
         Parser& p;
@@ -217,9 +226,40 @@ private:
 
     // object_queries.hpp
     Numeric parse_object_query(const Token& f);
+    Numeric parse_inside(const Token& f);
 
     // builtins.hpp
     Numeric parse_function(const Token& f);
+    Numeric parse_vector_builtin(const Token& f, const std::vector<Numeric>& args,
+                                 const std::vector<SourceLocation>& at);
+
+    // strings.hpp
+    bool starts_string(const Token& t) const;
+    std::string bounded_string(std::string s, const SourceLocation& at) const;
+    Token parse_string_token(const std::string& what);
+    std::string parse_string_expression(const std::string& what);
+    bool file_exists_here(const std::string& name) const;
+    Numeric parse_string_measure(const Token& f);
+
+    // user_functions.hpp
+    std::shared_ptr<const UserFunction> parse_user_function(const Token& kw, const std::string& name);
+    std::uint32_t fn_node(FunctionScope& s, FunctionNode n);
+    std::uint32_t fn_binary(FunctionScope& s, FunctionNode::Kind kind, const Token& op, std::uint32_t a,
+                            std::uint32_t b);
+    std::uint32_t fn_expression(FunctionScope& s);
+    std::uint32_t fn_or(FunctionScope& s);
+    std::uint32_t fn_and(FunctionScope& s);
+    std::uint32_t fn_relation(FunctionScope& s);
+    std::uint32_t fn_sum(FunctionScope& s);
+    std::uint32_t fn_product(FunctionScope& s);
+    std::uint32_t fn_unary(FunctionScope& s);
+    std::vector<std::uint32_t> fn_arguments(FunctionScope& s, const Token& f);
+    std::uint32_t fn_primary(FunctionScope& s);
+    static std::string join_names(const std::vector<std::string>& names);
+    static int component_index(const std::string& m, int dim);
+    std::uint32_t fn_component(const Token& call, const UserFunction& f);
+    void check_arity(const UserFunction& f, std::size_t n, const Token& call) const;
+    Numeric call_function_value(const Token& t, const UserFunction& f);
 
     // typed_values.hpp
     double to_float(const Numeric& n, const std::string& what, const SourceLocation& at) const;
@@ -296,6 +336,10 @@ private:
     std::vector<std::size_t> suppress_;
     bool in_vector_ = false;  ///< comparisons need parentheses: in a vector or a block's parameter
     bool mentions_photon_version_ = false;
+    RandomStreams random_;           ///< seed() and rand()
+    std::optional<Token> pending_call_;  ///< a function call whose name parse_block_value read
+    std::string declaring_;              ///< the identifier #declare is reading a value for
+    std::uint64_t function_steps_ = 0;  ///< user-function evaluation so far, bounded by max_tokens
     std::map<std::string, OpenFile> open_files_;        ///< by file identifier
     std::map<std::string, std::string> written_files_;  ///< by file name: what #write wrote, in memory
 };

@@ -50,8 +50,7 @@ inline std::shared_ptr<const SourceFile> Parser::load(const std::filesystem::pat
 }
 
 inline void Parser::directive_include(const Token& d) {
-    const Token s = next();
-    if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `#include`", s);
+    const Token s = parse_string_token("a file name in double quotes after `#include`");
     if (files_.size() >= options_.max_include_depth)
         fail(s.location, "includes nested too deep: more than " + std::to_string(options_.max_include_depth) +
                              " files open at once");

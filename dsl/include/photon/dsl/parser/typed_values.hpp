@@ -76,7 +76,8 @@ inline bool Parser::starts_expression(const Token& t) const {
         return true;
     if (t.text == "dimensions" || t.text == "dimension_size") return true;
     const Value* v = lookup(t.text);
-    return v && (std::holds_alternative<Numeric>(v->data) || std::holds_alternative<Spline>(v->data));
+    return v && (std::holds_alternative<Numeric>(v->data) || std::holds_alternative<Spline>(v->data) ||
+                 std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data));
 }
 
 /// `on`, `off`, any number, or nothing (meaning on).
