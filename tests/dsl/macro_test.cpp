@@ -218,3 +218,16 @@ TEST_CASE("#undef removes identifiers and macros; defined() and #ifdef see macro
     CHECK(error_of("#macro M() 1 #end\n#declare M = 2;") ==
           "2:10: cannot #declare `M`: it is a macro (defined at 1:8); `#undef` it first");
 }
+
+TEST_CASE("#declare changes the identifier where it is visible, else makes a global; deprecated marks are read",
+          "[dsl][macro]") {
+    // Inside a macro, #declare of a parameter changes the parameter; of a new name, a global.
+    CHECK(values("#macro M(P) #declare P = P * 2; #declare Out = P; #end\nM(21)", {"Out"}) == V{42});
+    // #local makes a new identifier in the call's scope even when a global has the name.
+    CHECK(values("#declare G = 1;\n#macro M() #local G = 5; #declare Seen = G; #end\nM()", {"G", "Seen"}) ==
+          V{1, 5});
+    CHECK(values("#declare deprecated once \"use B\" A = 3;\n#declare deprecated \"old\" C = A + 1;", {"A", "C"}) ==
+          V{3, 4});
+    CHECK(error_of("#declare deprecated A = 3;") ==
+          "1:21: expected a message in double quotes after `deprecated`, found `A`");
+}

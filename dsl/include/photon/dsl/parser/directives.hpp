@@ -143,6 +143,13 @@ inline void Parser::directive_declare(const Token& d, bool local) {
     {
         const ReadingName reading(*this);
         id = next();
+        // POV-Ray 3.7's `#declare deprecated [once] "message" NAME = ...`: read, the mark ignored.
+        if (id.is_identifier("deprecated")) {
+            Token message = next();
+            if (message.is_identifier("once")) message = next();
+            if (message.kind != TokenKind::string) fail_expected("a message in double quotes after `deprecated`", message);
+            id = next();
+        }
     }
     if (id.kind != TokenKind::identifier) fail_expected("an identifier after `#" + d.text + "`", id);
     if (is_reserved(id.text)) fail(id.location, "cannot #" + d.text + " `" + id.text + "`: it is a keyword");
