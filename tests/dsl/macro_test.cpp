@@ -7,6 +7,7 @@
 
 #include "dsl_test_util.hpp"
 
+#include <filesystem>
 #include <variant>
 
 using namespace dsl_test;
@@ -230,4 +231,33 @@ TEST_CASE("#declare changes the identifier where it is visible, else makes a glo
           V{3, 4});
     CHECK(error_of("#declare deprecated A = 3;") ==
           "1:21: expected a message in double quotes after `deprecated`, found `A`");
+}
+
+TEST_CASE("#declare of a block photon does not evaluate is read with a warning", "[dsl][macro]") {
+    const Parsed p = parse("#declare Jade_Map =\ncolor_map { [0 rgb 0] [1 rgb 1] }\n#declare Bumps = normal { bumps 0.5 }\n"
+                           "sphere { 0, 1 }");
+    CHECK_THAT(all_messages(p.warnings), Contains("`color_map` is read but not used"));
+    CHECK_THAT(all_messages(p.warnings), Contains("`normal` is read but not used"));
+    REQUIRE(p.warnings.size() == 2);
+    CHECK(p.warnings[0].location.line == 2);
+    CHECK(error_of("#declare M = color_map { [0 rgb 0] }\nsphere { 0, 1 pigment { M } }") ==
+          "2:25: expected a colour or a pigment identifier, found `M` (a `color_map` (read, not used by photon), "
+          "declared at 1:10)");
+}
+
+TEST_CASE("colors.inc's colour macros run (skipped when POV-Ray's includes are not installed)", "[dsl][macro]") {
+    const std::filesystem::path includes = "/usr/share/povray-3.7/include";
+    if (!std::filesystem::exists(includes / "colors.inc")) {
+        WARN("povray-includes is not installed: skipped");
+        return;
+    }
+    dsl::ParseOptions options;
+    options.include_paths.push_back(includes);
+    // CHSV2RGB uses #switch/#range and #local; CRGB2HSV nested macros and conditional expressions.
+    const V got = values("#include \"colors.inc\"\n#declare C = CHSV2RGB(<120, 1, 1>);\n"
+                         "#declare H = CRGB2HSV(rgb <0.2, 0.4, 0.8>);",
+                         {"C.red", "C.green", "C.blue", "H.x", "H.y", "H.z"}, options);
+    const V want{0, 1, 0, 220, 0.75, 0.8};
+    REQUIRE(got.size() == want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) CHECK(got[i] == Approx(want[i]).margin(1e-12));
 }

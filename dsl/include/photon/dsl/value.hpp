@@ -75,6 +75,14 @@ struct MaterialBlock {
     SourceLocation at;
 };
 
+/// A block photon reads but does not evaluate (`#declare Map = color_map { ... }`, a `normal`,
+/// `media`, ...): declared so that the file reads on; using it where photon needs its content
+/// is an error at the use.
+struct SkippedBlock {
+    std::string keyword;
+    SourceLocation at;
+};
+
 struct Value;
 
 /// `array[N][M]...`: the sizes, and the elements in row-major order, each unset until assigned.
@@ -95,7 +103,7 @@ struct Array {
 };
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
-                               CameraDescription, MaterialBlock, Array>;
+                               CameraDescription, MaterialBlock, Array, SkippedBlock>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -136,8 +144,10 @@ struct Value {
             return "a camera";
         case 9:
             return "a material";
-        default:
+        case 10:
             return "an array";
+        default:
+            return "a `" + std::get<SkippedBlock>(v).keyword + "` (read, not used by photon)";
     }
 }
 

@@ -101,7 +101,7 @@ inline bool Parser::is_reserved(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
            one_of(w, constants) || one_of(w, functions) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
-           one_of(w, other_keywords) || one_of(w, array_keywords);
+           one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, skipped_declarable_blocks);
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -195,6 +195,12 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     }
     if (one_of(w, object_keywords)) return parse_object(next());
     if (one_of(w, unsupported_objects)) unsupported_object(t);
+    if (one_of(w, skipped_declarable_blocks)) {
+        const Token kw = next();
+        skip_block(kw);
+        warn(kw.location, "`" + w + "` is read but not used: photon does not evaluate it");
+        return SkippedBlock{w, kw.location};
+    }
     if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
         next();
         return v->data;
