@@ -7,6 +7,7 @@
 
 #include "dsl_test_util.hpp"
 
+#include <filesystem>
 #include <variant>
 
 using namespace dsl_test;
@@ -217,4 +218,46 @@ TEST_CASE("#undef removes identifiers and macros; defined() and #ifdef see macro
                  {"D1", "D2"}) == V{1, 0});
     CHECK(error_of("#macro M() 1 #end\n#declare M = 2;") ==
           "2:10: cannot #declare `M`: it is a macro (defined at 1:8); `#undef` it first");
+}
+
+TEST_CASE("#declare changes the identifier where it is visible, else makes a global; deprecated marks are read",
+          "[dsl][macro]") {
+    // Inside a macro, #declare of a parameter changes the parameter; of a new name, a global.
+    CHECK(values("#macro M(P) #declare P = P * 2; #declare Out = P; #end\nM(21)", {"Out"}) == V{42});
+    // #local makes a new identifier in the call's scope even when a global has the name.
+    CHECK(values("#declare G = 1;\n#macro M() #local G = 5; #declare Seen = G; #end\nM()", {"G", "Seen"}) ==
+          V{1, 5});
+    CHECK(values("#declare deprecated once \"use B\" A = 3;\n#declare deprecated \"old\" C = A + 1;", {"A", "C"}) ==
+          V{3, 4});
+    CHECK(error_of("#declare deprecated A = 3;") ==
+          "1:21: expected a message in double quotes after `deprecated`, found `A`");
+}
+
+TEST_CASE("#declare of a block photon does not evaluate is read with a warning", "[dsl][macro]") {
+    const Parsed p = parse("#declare Jade_Map =\ncolor_map { [0 rgb 0] [1 rgb 1] }\n#declare Bumps = normal { bumps 0.5 }\n"
+                           "sphere { 0, 1 }");
+    CHECK_THAT(all_messages(p.warnings), Contains("`color_map` is read but not used"));
+    CHECK_THAT(all_messages(p.warnings), Contains("`normal` is read but not used"));
+    REQUIRE(p.warnings.size() == 2);
+    CHECK(p.warnings[0].location.line == 2);
+    CHECK(error_of("#declare M = color_map { [0 rgb 0] }\nsphere { 0, 1 pigment { M } }") ==
+          "2:25: expected a colour or a pigment identifier, found `M` (a `color_map` (read, not used by photon), "
+          "declared at 1:10)");
+}
+
+TEST_CASE("colors.inc's colour macros run (skipped when POV-Ray's includes are not installed)", "[dsl][macro]") {
+    const std::filesystem::path includes = "/usr/share/povray-3.7/include";
+    if (!std::filesystem::exists(includes / "colors.inc")) {
+        WARN("povray-includes is not installed: skipped");
+        return;
+    }
+    dsl::ParseOptions options;
+    options.include_paths.push_back(includes);
+    // CHSV2RGB uses #switch/#range and #local; CRGB2HSV nested macros and conditional expressions.
+    const V got = values("#include \"colors.inc\"\n#declare C = CHSV2RGB(<120, 1, 1>);\n"
+                         "#declare H = CRGB2HSV(rgb <0.2, 0.4, 0.8>);",
+                         {"C.red", "C.green", "C.blue", "H.x", "H.y", "H.z"}, options);
+    const V want{0, 1, 0, 220, 0.75, 0.8};
+    REQUIRE(got.size() == want.size());
+    for (std::size_t i = 0; i < want.size(); ++i) CHECK(got[i] == Approx(want[i]).margin(1e-12));
 }

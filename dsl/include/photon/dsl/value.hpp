@@ -78,6 +78,13 @@ struct MaterialBlock {
 };
 
 struct UserFunction;  // user_function.hpp
+/// A block photon reads but does not evaluate (`#declare Map = color_map { ... }`, a `normal`,
+/// `media`, ...): declared so that the file reads on; using it where photon needs its content
+/// is an error at the use.
+struct SkippedBlock {
+    std::string keyword;
+    SourceLocation at;
+};
 
 struct Value;
 
@@ -99,7 +106,8 @@ struct Array {
 };
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
-                               CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>>;
+                               CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
+                               SkippedBlock>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -144,8 +152,10 @@ struct Value {
             return "an array";
         case 11:
             return "a spline";
-        default:
+        case 12:
             return "a function";
+        default:
+            return "a `" + std::get<SkippedBlock>(v).keyword + "` (read, not used by photon)";
     }
 }
 

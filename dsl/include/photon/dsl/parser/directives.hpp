@@ -111,7 +111,7 @@ inline bool Parser::is_reserved(std::string_view w) const {
            one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
            one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, string_functions) ||
-           one_of(w, function_words);
+           one_of(w, function_words) || one_of(w, skipped_declarable_blocks);
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -153,6 +153,13 @@ inline void Parser::directive_declare(const Token& d, bool local) {
     {
         const ReadingName reading(*this);
         id = next();
+        // POV-Ray 3.7's `#declare deprecated [once] "message" NAME = ...`: read, the mark ignored.
+        if (id.is_identifier("deprecated")) {
+            Token message = next();
+            if (message.is_identifier("once")) message = next();
+            if (message.kind != TokenKind::string) fail_expected("a message in double quotes after `deprecated`", message);
+            id = next();
+        }
     }
     if (id.kind != TokenKind::identifier) fail_expected("an identifier after `#" + d.text + "`", id);
     if (is_reserved(id.text)) fail(id.location, "cannot #" + d.text + " `" + id.text + "`: it is a keyword");
@@ -207,6 +214,12 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
         if (!peek().is_symbol("(")) return f;
         pending_call_ = name;
         return std::nullopt;
+    }
+    if (one_of(w, skipped_declarable_blocks)) {
+        const Token kw = next();
+        skip_block(kw);
+        warn(kw.location, "`" + w + "` is read but not used: photon does not evaluate it");
+        return SkippedBlock{w, kw.location};
     }
     if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
         next();

@@ -97,6 +97,10 @@ inline constexpr std::string_view spline_keywords[] = {"spline", "linear_spline"
                                                       "natural_spline"};
 /// Arrays' keywords (parser/arrays.hpp); `dimensions` and `dimension_size` are functions.
 inline constexpr std::string_view array_keywords[] = {"array", "mixed", "dimensions", "dimension_size"};
+/// Blocks `#declare` reads (and skips) without evaluating them, so that the standard includes read on.
+inline constexpr std::string_view skipped_declarable_blocks[] = {
+    "normal",      "color_map",  "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
+    "density_map", "density",    "media",      "fog",         "rainbow",    "sky_sphere"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",
