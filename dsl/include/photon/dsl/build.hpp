@@ -55,9 +55,10 @@ struct BuiltScene {
 class Warnings {
 public:
     explicit Warnings(DiagnosticSink sink) : sink_(std::move(sink)) {}
-    void operator()(const SourceLocation& at, const std::string& message) {
+    void operator()(const SourceLocation& at, const std::string& message, std::string kind = {},
+                    std::string keyword = {}) {
         if (!seen_.insert(at.str() + '\x1f' + message).second) return;
-        if (sink_) sink_({Severity::warning, at, message});
+        if (sink_) sink_({Severity::warning, at, message, std::move(kind), std::move(keyword)});
     }
 
 private:
@@ -357,6 +358,11 @@ public:
     void add_all(DefaultScene<S>& scene) {
         scene_ = &scene;
         for (const Object& o : desc_.objects) add(o, Inherited{});
+        if (scene.objects().empty() && skipped_ > 0)
+            warn_(desc_.at,
+                  "nothing renders: photon skipped every object of the scene (" + std::to_string(skipped_) +
+                      (skipped_ == 1 ? " object" : " objects") + " it has no shape for)",
+                  "nothing renders", "");
         if (scene.lights().empty()) warn_(desc_.at, "the scene has no light_source: the image will be black");
     }
 
@@ -381,6 +387,10 @@ private:
         if (const auto* l = std::get_if<LightSource>(&o.shape)) return add_light(*l, mine.transform, o.at);
         if (const auto* u = std::get_if<UnionShape>(&o.shape)) {
             for (const auto& child : u->children) add(*child, mine);
+            return;
+        }
+        if (std::holds_alternative<SkippedShape>(o.shape)) {  // the parser warned at its place
+            ++skipped_;
             return;
         }
         try {
@@ -443,6 +453,7 @@ private:
     }
     void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const LightSource&, const Transform&, MaterialId, ObjectOptions) {}
+    void add_shape(const SkippedShape&, const Transform&, MaterialId, ObjectOptions) {}
 
     MaterialId material_for(const Inherited& in, const Object& o) {
         static const Texture pov_default{};
@@ -530,6 +541,7 @@ private:
     DefaultScene<S>* scene_ = nullptr;
     std::vector<std::pair<MaterialParams<S>, MaterialId>> materials_;
     std::vector<SourceLocation> object_at_;
+    std::size_t skipped_ = 0;  ///< objects photon has no shape for
 };
 
 }  // namespace detail

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <optional>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "description.hpp"
 
@@ -64,8 +67,22 @@ struct Numeric {
     return s + ">";
 }
 
-using ValueData =
-    std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object, CameraDescription>;
+/// A declared blend map (`color_map`, `pigment_map`, `texture_map`, `normal_map`, ...): what photon
+/// keeps of it, each entry's value and colour (a pigment or texture entry reduced to its colour),
+/// and for a texture_map the first entry's finish.
+struct BlendMap {
+    std::string keyword;
+    std::vector<std::pair<double, Color>> entries;
+    std::optional<Finish> finish;
+};
+
+/// A declared block photon reads but does not render (`fog`, `media`, `normal`, `sky_sphere`, ...).
+struct IgnoredBlock {
+    std::string keyword;
+};
+
+using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
+                               CameraDescription, BlendMap, IgnoredBlock>;
 
 /// A declared identifier's value and where it was declared.
 struct Value {
@@ -94,8 +111,12 @@ struct Value {
             return "a transform";
         case 7:
             return std::holds_alternative<LightSource>(std::get<Object>(v).shape) ? "a light_source" : "an object";
-        default:
+        case 8:
             return "a camera";
+        case 9:
+            return "a " + std::get<BlendMap>(v).keyword;
+        default:
+            return "a " + std::get<IgnoredBlock>(v).keyword;
     }
 }
 

@@ -118,10 +118,16 @@ inline void Parser::directive_declare(const Token& d, bool local) {
             block = parse_transform_block(next());
         else if (w == "camera")
             block = parse_camera(next());
-        else if (one_of(w, object_keywords)) {
+        else if (is_object_keyword(w)) {
             block = parse_object(next());
-        } else if (one_of(w, unsupported_objects)) {
-            unsupported_object(t);
+        } else if (one_of(w, blend_map_keywords)) {
+            block = parse_blend_map(next());
+        } else if (one_of(w, {"fog", "rainbow", "sky_sphere", "media", "normal", "density"})) {
+            // Read (so that its errors show), kept so that its use by name is known; the warning
+            // comes where it is used.
+            const Nest nest(*this, t.location);
+            skip_block(next());
+            block = IgnoredBlock{w};
         } else if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
             next();
             block = v->data;

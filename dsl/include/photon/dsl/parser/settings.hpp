@@ -2,6 +2,7 @@
 #pragma once
 // global_settings: POV-Ray's own items, its photons block, and photon's own settings.
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -45,7 +46,9 @@ inline void Parser::parse_global_settings(const Token& kw) {
         } else if (w == "photons") {
             parse_pov_photons(t);
         } else if (w == "subsurface") {
-            fail(t.location, "`subsurface` is not supported by photon");
+            skip_block(t);
+            degrade(t.location, degraded::ignored_effect, "subsurface",
+                    "`subsurface` is ignored: photon has no subsurface light transport");
         } else if (w == "charset" || w == "noise_generator" || w == "number_of_waves" || w == "max_intersections" ||
                    w == "irid_wavelength" || w == "hf_gray_16" || w == "mm_per_unit") {
             if (w == "irid_wavelength")
