@@ -293,3 +293,19 @@ TEST_CASE("mesh2 is read into a mesh; its normals and per-face textures are left
     CHECK_THAT(error_of("mesh2 { vertex_vectors { 3, 0, x } face_indices { 1, <0, 1, 2> } }"),
                Contains("expected vertex 2 of the mesh2"));
 }
+
+TEST_CASE("forms the sample scenes use: a spotlight's negative radius, a mesh2 count without comma, fractals",
+          "[dsl][degradation]") {
+    // POV-Ray keeps cos(angle): radius -90 is radius 90 (its radiosity/cornell.pov).
+    const Parsed p = parse("light_source { 0, 1 spotlight radius -90 falloff 270 point_at y }\nsphere { 0, 1 }\n");
+    const auto& spot = *std::get<dsl::LightSource>(p.desc.objects[0].shape).spotlight;
+    CHECK(spot.radius == Approx(90));
+    CHECK(spot.falloff == Approx(90));
+    const Parsed m = parse(std::string(lit) + "mesh2 { vertex_vectors { 3\n <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }\n"
+                                              "face_indices { 1\n <0, 1, 2> } }\n");
+    CHECK(std::get<dsl::MeshShape>(m.desc.objects[1].shape).triangles->size() == 1);
+    check_rgb(first_color("pigment { magnet 1 mandel 50 color_map { [0 rgb 1] [1 rgb 0] } interior 1, 200 "
+                          "exterior 5, 1 }"),
+              0.5, 0.5, 0.5);
+    CHECK_THAT(error_of("sphere { 0, 1 pigment { rgb 1 interior 1, 2 } }"), Contains("found `interior`"));
+}

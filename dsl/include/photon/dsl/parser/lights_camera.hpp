@@ -7,6 +7,8 @@
 
 namespace photon::dsl::detail {
 
+inline constexpr double radians_per_degree = 3.14159265358979323846 / 180.0;
+
 inline Object Parser::parse_light(const Token& kw) {
     open_block(kw);
     Object obj;
@@ -48,10 +50,12 @@ inline Object Parser::parse_light(const Token& kw) {
             spot.point_at = parse_vector("the point after `point_at`");
         } else if (w == "radius" || w == "falloff") {
             SourceLocation at;
-            const double a = parse_float("the angle in degrees after `" + w + "`", &at);
+            double a = parse_float("the angle in degrees after `" + w + "`", &at);
             if (light.written.count("cylinder")) continue;  // a distance there, and photon uses a point light
-            if (!(a >= 0 && a <= 180))
-                fail(at, "`" + w + "` must be an angle from 0 to 180 degrees, found " + format_number(a));
+            // POV-Ray keeps only cos(angle), so any angle means the one from 0 to 180 degrees with that
+            // cosine: the `radius -90 falloff 90` of POV-Ray's Cornell box is a hemisphere.
+            if (!std::isfinite(a)) fail(at, "`" + w + "` must be a finite angle, found " + format_number(a));
+            if (!(a >= 0 && a <= 180)) a = std::acos(std::clamp(std::cos(a * radians_per_degree), -1.0, 1.0)) / radians_per_degree;
             (w == "radius" ? spot.radius : spot.falloff) = a;
         } else if (w == "tightness") {
             spot.tightness = parse_nonnegative("`tightness`");

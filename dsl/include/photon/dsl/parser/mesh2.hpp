@@ -15,10 +15,17 @@ namespace photon::dsl::detail {
 inline MeshShape Parser::parse_mesh2(const Token& kw, Object& obj) {
     std::vector<Vector3> vertices;
     auto tris = std::make_shared<std::vector<std::array<Vector3, 3>>>();
+    // The count is a plain number in practice, often followed by `<` on the next line without a
+    // comma (`14 <-1, ...`), which an expression would read as a comparison.
     auto count_of = [&](const Token& block) {
-        const auto n = std::size_t(parse_integer("the number of entries of `" + block.text + "`", 0,
-                                                 double(options_.max_primitives)));
-        return n;
+        const std::string what = "the number of entries of `" + block.text + "`";
+        const Token n = peek();
+        if (n.kind != TokenKind::number) return std::size_t(parse_integer(what, 0, double(options_.max_primitives)));
+        next();
+        if (!(n.number >= 0 && n.number <= double(options_.max_primitives)) || n.number != std::floor(n.number))
+            fail(n.location, what + " must be a whole number from 0 to " + std::to_string(options_.max_primitives) +
+                                 ", found " + format_number(n.number));
+        return std::size_t(n.number);
     };
     bool faces = false;
     obj.primitives = 0;

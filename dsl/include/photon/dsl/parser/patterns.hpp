@@ -219,6 +219,11 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         const Numeric n = parse_expression_for("the value of `" + w + "`");
         if (w == "mortar") st.mortar = n.at(0);
         if (w == "brick_size") st.brick_size = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
+    } else if ((w == "interior" || w == "exterior") && one_of(st.pattern.text, {"mandel", "julia", "magnet"})) {
+        next();  // a fractal's colouring inside and outside the set: TYPE, FACTOR
+        parse_float("the type of `" + w + "`");
+        optional_comma();
+        parse_float("the factor of `" + w + "`");
     } else if (w == "poly_wave") {
         next();
         if (starts_expression(peek())) parse_float("the exponent of `poly_wave`");
