@@ -301,11 +301,22 @@ TEST_CASE("forms the sample scenes use: a spotlight's negative radius, a mesh2 c
     const auto& spot = *std::get<dsl::LightSource>(p.desc.objects[0].shape).spotlight;
     CHECK(spot.radius == Approx(90));
     CHECK(spot.falloff == Approx(90));
-    const Parsed m = parse(std::string(lit) + "mesh2 { vertex_vectors { 3\n <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }\n"
+    const Parsed m = parse(std::string(lit) + "mesh2 { vertex_vectors { 3\n <0, 0, 0>, <1, 0, 0>, <0, 1, 0>, }\n"
                                               "face_indices { 1\n <0, 1, 2> } }\n");
     CHECK(std::get<dsl::MeshShape>(m.desc.objects[1].shape).triangles->size() == 1);
     check_rgb(first_color("pigment { magnet 1 mandel 50 color_map { [0 rgb 1] [1 rgb 0] } interior 1, 200 "
                           "exterior 5, 1 }"),
               0.5, 0.5, 0.5);
     CHECK_THAT(error_of("sphere { 0, 1 pigment { rgb 1 interior 1, 2 } }"), Contains("found `interior`"));
+}
+
+TEST_CASE("warnings about finish items and modifiers photon ignores carry a kind too", "[dsl][degradation]") {
+    const Built b = build_text(std::string(lit) +
+                               "sphere { 0, 1 finish { ambient 0.2 specular 0.5 brilliance 2 } no_image }\n"
+                               "merge { sphere { 0, 1 } sphere { x, 1 } finish { ambient 0 } }\n"
+                               "mesh { smooth_triangle { 0, y, x, y, y, y } finish { ambient 0 } }\n");
+    CHECK(places(b.warnings, "approximated finish") ==
+          std::vector<std::string>{"3:24 ambient", "3:49 brilliance", "3:36 specular"});
+    CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"3:64 no_image", "5:8 smooth_triangle"});
+    CHECK(places(b.warnings, "approximated object") == std::vector<std::string>{"4:1 merge"});
 }

@@ -191,26 +191,30 @@ template <Scalar S>
             if (f.conserve_energy) transmission *= Vector3(1.0) - specular;
         }
         if (r.falloff != 1 || r.exponent != 1 || r.metallic != 0)
-            warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon");
+            warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon", "approximated finish", "reflection");
     }
     const Vector3 ambient = f.ambient * global.ambient_light;
     if (ambient != Vector3(0.0))
         warn(item("ambient"),
              std::string(f.written.count("ambient") ? "`ambient`" : "POV-Ray's default `ambient 0.1`") +
                  " is ignored: photon has no ambient light. Write `finish { ambient 0 }` or "
-                 "`global_settings { ambient_light 0 }`");
+                 "`global_settings { ambient_light 0 }`",
+             "approximated finish", "ambient");
     if (f.brilliance != 1)
         warn(item("brilliance"), "`brilliance " + format_number(f.brilliance) +
-                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)");
+                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)",
+             "approximated finish", "brilliance");
     if (f.specular != 0)
         warn(item("specular"),
-             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight");
+             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight", "approximated finish",
+             "specular");
     if (f.emission != Vector3(0.0))
-        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon");
-    if (f.diffuse_back != 0) warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon");
-    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon");
+        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon", "approximated finish", "emission");
+    if (f.diffuse_back != 0)
+        warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon", "approximated finish", "diffuse");
+    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon", "approximated finish", "metallic");
     for (const char* k : {"irid", "crand"})
-        if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon");
+        if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon", "approximated finish", k);
 
     constexpr const char* channel[] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {

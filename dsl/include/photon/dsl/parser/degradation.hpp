@@ -15,6 +15,7 @@ namespace degraded {
 inline constexpr std::string_view skipped_object = "skipped object";
 inline constexpr std::string_view approximated_pigment = "approximated pigment";
 inline constexpr std::string_view approximated_texture = "approximated texture";
+inline constexpr std::string_view approximated_object = "approximated object";
 inline constexpr std::string_view approximated_camera = "approximated camera";
 inline constexpr std::string_view approximated_light = "approximated light";
 inline constexpr std::string_view ignored_effect = "ignored effect";

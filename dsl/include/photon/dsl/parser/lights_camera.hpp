@@ -220,11 +220,12 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
             cam.angle = a;
         } else if (w == "focal_point") {
             parse_vector("the focal point");
-            warn(t.location, "`focal_point` is ignored: photon's camera is a pinhole");
+            degrade(t.location, degraded::approximated_camera, w, "`focal_point` is ignored: photon's camera is a pinhole");
         } else {
             parse_float("`" + w + "`");
             if (w == "aperture")
-                warn(t.location, "`aperture` is ignored: photon's camera is a pinhole (no depth of field)");
+                degrade(t.location, degraded::approximated_camera, w,
+                        "`aperture` is ignored: photon's camera is a pinhole (no depth of field)");
         }
     }
     close_block(kw, "a camera item (location, look_at, up, right, direction, sky, angle, translate, rotate)",

@@ -201,11 +201,13 @@ inline Interior Parser::parse_interior(const Token& kw, Interior in) {
             next();
             const double v = parse_float("`" + t.text + "`");
             if (v != 0 && !(t.text == "dispersion" && v == 1) && t.text != "dispersion_samples")
-                warn(t.location, "interior `" + t.text + "` is ignored: photon's glass is clear, with one ior");
+                degrade(t.location, degraded::ignored_effect, t.text,
+                        "interior `" + t.text + "` is ignored: photon's glass is clear, with one ior");
         } else if (t.is_identifier("fade_color") || t.is_identifier("fade_colour")) {
             next();
             parse_color("the fade colour");
-            warn(t.location, "interior `" + t.text + "` is ignored: photon's glass does not absorb");
+            degrade(t.location, degraded::ignored_effect, t.text,
+                    "interior `" + t.text + "` is ignored: photon's glass does not absorb");
         } else if (t.is_identifier("media")) {
             skip_effect(next());
         } else {

@@ -41,6 +41,7 @@ inline MeshShape Parser::parse_mesh2(const Token& kw, Object& obj) {
                 optional_comma();
                 vertices.push_back(parse_vector("vertex " + std::to_string(i) + " of the mesh2"));
             }
+            optional_comma();  // POV-Ray allows one after the last entry, as in its objects/mesh2.pov
             close_block(t, "no more vertices (`vertex_vectors` says " + std::to_string(n) + ")");
         } else if (t.is_identifier("face_indices")) {
             next();
@@ -69,6 +70,7 @@ inline MeshShape Parser::parse_mesh2(const Token& kw, Object& obj) {
                 }
                 add_primitives(obj, 1, at);
             }
+            optional_comma();
             close_block(t, "no more faces (`face_indices` says " + std::to_string(n) + ")");
         } else if (t.is_identifier("texture_list")) {
             next();
@@ -81,6 +83,7 @@ inline MeshShape Parser::parse_mesh2(const Token& kw, Object& obj) {
                 if (!tk.is_identifier("texture")) fail_expected("`texture` in `texture_list`", tk);
                 parse_texture(tk, default_texture_);
             }
+            optional_comma();
             close_block(t, "no more textures (`texture_list` says " + std::to_string(n) + ")");
             degrade(t.location, degraded::approximated_texture, "texture_list",
                     "`texture_list` is ignored: photon gives the mesh2 one texture");

@@ -82,7 +82,9 @@ inline Object Parser::parse_object(const Token& kw) {
     } else if (w == "union" || w == "merge") {
         UnionShape u;
         u.merge = w == "merge";
-        if (u.merge) warn(kw.location, "`merge` is read as `union`: photon keeps the inner surfaces");
+        if (u.merge)
+            degrade(kw.location, degraded::approximated_object, w,
+                    "`merge` is read as `union`: photon keeps the inner surfaces");
         obj.primitives = 0;
         for (;;) {
             const Token& t = peek();
@@ -176,7 +178,9 @@ inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {
             parse_vector("the normal at corner " + std::to_string(i + 1));
         }
     }
-    if (smooth) warn(kw.location, "`smooth_triangle` normals are ignored: photon shades triangles flat");
+    if (smooth)
+        degrade(kw.location, degraded::ignored_effect, kw.text,
+                "`smooth_triangle` normals are ignored: photon shades triangles flat");
     return t;
 }
 
@@ -236,7 +240,7 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "inverse"})) {
             next();
             obj.ignored[w] = t.location;
-            warn(t.location, "`" + w + "` is ignored by photon");
+            degrade(t.location, degraded::ignored_effect, w, "`" + w + "` is ignored by photon");
         } else if (one_of(w, {"hollow", "sturm"})) {
             next();
             parse_optional_bool();
@@ -246,7 +250,8 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         } else if (w == "interior_texture") {
             next();
             parse_texture(t, default_texture_);
-            warn(t.location, "`interior_texture` is ignored: photon uses one texture for both sides");
+            degrade(t.location, degraded::approximated_texture, w,
+                    "`interior_texture` is ignored: photon uses one texture for both sides");
         } else if (w == "bounded_by" || w == "clipped_by") {
             parse_bound_or_clip(next());
         } else if (is_object_keyword(w) && std::holds_alternative<UnionShape>(obj.shape)) {
