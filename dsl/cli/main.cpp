@@ -196,7 +196,7 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         targets += scene.is_caustic_target(i);
         shadowless += !o.options.casts_shadow;
     }
-    std::cout << "objects    " << scene.objects().size() << ':';
+    std::cout << "objects    " << scene.objects().size() << (kinds.empty() ? "" : ":");  // none: all skipped
     const char* sep = " ";
     for (const auto& [name, n] : kinds) std::cout << sep << n << ' ' << name, sep = ", ";
     std::cout << "; " << targets << " caustic target" << (targets == 1 ? "" : "s");
