@@ -57,6 +57,8 @@ struct SceneOptions {
     bool strict = false;
     bool quiet = false;
     std::size_t warnings = 0;
+    /// Constructs photon read but skipped or approximated: count per warning kind and keyword.
+    std::map<std::string, std::map<std::string, std::size_t>> degraded;
 
     void add_to(CLI::App& cmd) {
         cmd.add_option("scene", scene, "The scene file (POV-Ray 3.7 language, see docs/scene-language.md)")
@@ -76,6 +78,7 @@ struct SceneOptions {
     dsl::DiagnosticSink sink() {
         return [this](const dsl::Diagnostic& d) {
             ++warnings;
+            if (!d.kind.empty()) ++degraded[d.kind][d.keyword];
             if (!quiet || strict) std::cerr << dsl::format_diagnostic(d) << '\n';
         };
     }
@@ -189,7 +192,7 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         targets += scene.is_caustic_target(i);
         shadowless += !o.options.casts_shadow;
     }
-    std::cout << "objects    " << scene.objects().size() << ':';
+    std::cout << "objects    " << scene.objects().size() << (kinds.empty() ? "" : ":");  // none: all skipped
     const char* sep = " ";
     for (const auto& [name, n] : kinds) std::cout << sep << n << ' ' << name, sep = ", ";
     std::cout << "; " << targets << " caustic target" << (targets == 1 ? "" : "s");
@@ -339,6 +342,21 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     return partial ? exit_interrupted : EXIT_SUCCESS;
 }
 
+/// The summary of what photon read but skipped or approximated, by kind and keyword.
+void print_degraded(const std::map<std::string, std::map<std::string, std::size_t>>& degraded) {
+    if (degraded.empty()) return;
+    std::cout << "degraded   what photon read but does not render as written:\n";
+    for (const auto& [kind, keywords] : degraded) {
+        std::size_t total = 0;
+        for (const auto& [keyword, n] : keywords) total += n;
+        std::cout << "           " << total << ' ' << kind;
+        const char* sep = ": ";
+        for (const auto& [keyword, n] : keywords)
+            if (!keyword.empty()) std::cout << sep << n << ' ' << keyword, sep = ", ";
+        std::cout << '\n';
+    }
+}
+
 /// `photon check` builds the scene as `render` does, so the build step's errors (a mesh file
 /// missing or broken, at its name in the scene) are reported by check too.
 int run_check(SceneOptions& so) {
@@ -348,6 +366,7 @@ int run_check(SceneOptions& so) {
     const dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
     report(so.scene, desc, built);
     std::cout << "warnings   " << so.warnings << '\n';
+    print_degraded(so.degraded);
     return so.failed_strict() ? exit_error : EXIT_SUCCESS;
 }
 

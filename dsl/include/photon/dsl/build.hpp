@@ -51,9 +51,10 @@ struct BuiltScene {
 class Warnings {
 public:
     explicit Warnings(DiagnosticSink sink) : sink_(std::move(sink)) {}
-    void operator()(const SourceLocation& at, const std::string& message) {
+    void operator()(const SourceLocation& at, const std::string& message, std::string kind = {},
+                    std::string keyword = {}) {
         if (!seen_.insert(at.str() + '\x1f' + message).second) return;
-        if (sink_) sink_({Severity::warning, at, message});
+        if (sink_) sink_({Severity::warning, at, message, std::move(kind), std::move(keyword)});
     }
 
 private:
@@ -214,26 +215,30 @@ template <Scalar S>
             if (f.conserve_energy) transmission *= Vector3(1.0) - specular;
         }
         if (r.falloff != 1 || r.exponent != 1 || r.metallic != 0)
-            warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon");
+            warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon", "approximated finish", "reflection");
     }
     const Vector3 ambient = f.ambient * global.ambient_light;
     if (ambient != Vector3(0.0))
         warn(item("ambient"),
              std::string(f.written.count("ambient") ? "`ambient`" : "POV-Ray's default `ambient 0.1`") +
                  " is ignored: photon has no ambient light. Write `finish { ambient 0 }` or "
-                 "`global_settings { ambient_light 0 }`");
+                 "`global_settings { ambient_light 0 }`",
+             "approximated finish", "ambient");
     if (f.brilliance != 1)
         warn(item("brilliance"), "`brilliance " + format_number(f.brilliance) +
-                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)");
+                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)",
+             "approximated finish", "brilliance");
     if (f.specular != 0)
         warn(item("specular"),
-             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight");
+             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight", "approximated finish",
+             "specular");
     if (f.emission != Vector3(0.0))
-        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon");
-    if (f.diffuse_back != 0) warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon");
-    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon");
+        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon", "approximated finish", "emission");
+    if (f.diffuse_back != 0)
+        warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon", "approximated finish", "diffuse");
+    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon", "approximated finish", "metallic");
     for (const char* k : {"irid", "crand"})
-        if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon");
+        if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon", "approximated finish", k);
 
     constexpr const char* channel[] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {
@@ -347,6 +352,11 @@ public:
     void add_all(DefaultScene<S>& scene) {
         scene_ = &scene;
         for (const Object& o : desc_.objects) add(o, Inherited{});
+        if (scene.objects().empty() && skipped_ > 0)
+            warn_(desc_.at,
+                  "nothing renders: photon skipped every object of the scene (" + std::to_string(skipped_) +
+                      (skipped_ == 1 ? " object" : " objects") + " it has no shape for)",
+                  "nothing renders", "");
         if (scene.lights().empty()) warn_(desc_.at, "the scene has no light_source: the image will be black");
     }
 
@@ -382,6 +392,10 @@ private:
         if (const auto* l = std::get_if<LightSource>(&o.shape)) return add_light(*l, mine.transform, o.at);
         if (const auto* u = std::get_if<UnionShape>(&o.shape)) {
             for (const auto& child : u->children) add(*child, mine);
+            return;
+        }
+        if (std::holds_alternative<SkippedShape>(o.shape)) {  // the parser warned at its place
+            ++skipped_;
             return;
         }
         try {
@@ -453,6 +467,7 @@ private:
     }
     void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const LightSource&, const Transform&, MaterialId, ObjectOptions) {}
+    void add_shape(const SkippedShape&, const Transform&, MaterialId, ObjectOptions) {}
 
     MaterialId material_for(const Inherited& in, const Object& o) {
         static const Texture pov_default{};
@@ -547,6 +562,7 @@ private:
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
     MeshFiles mesh_files_;
+    std::size_t skipped_ = 0;  ///< objects photon has no shape for
 };
 
 }  // namespace detail

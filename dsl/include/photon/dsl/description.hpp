@@ -211,7 +211,14 @@ struct UnionShape {
     bool merge = false;
 };
 
-using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource>;
+/// An object photon reads but cannot render (a cylinder, a difference, a blob, ...): kept in the
+/// description so that the build skips it and `object { Name }` of a declared one warns again.
+struct SkippedShape {
+    std::string keyword;  ///< POV-Ray's keyword, `cylinder`
+};
+
+using Shape =
+    std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource, SkippedShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -234,6 +241,7 @@ struct Object {
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere", "box", "plane", "triangle", "mesh", "union", "light_source"};
     if (s.index() == 5 && std::get<UnionShape>(s).merge) return "merge";
+    if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     return names[s.index()];
 }
 

@@ -41,6 +41,10 @@ struct Diagnostic {
     Severity severity = Severity::error;
     SourceLocation location;
     std::string message;
+    /// What photon did with a construct it reads but does not render ("skipped object",
+    /// "approximated pigment", "ignored effect", ...) and that construct's keyword, for the
+    /// summary of `photon check`; empty for other warnings.
+    std::string kind, keyword;
 };
 
 /// Receives warnings as they are found (errors are thrown as dsl::Error). Tests collect them.
@@ -81,7 +85,7 @@ using DiagnosticSink = std::function<void(const Diagnostic&)>;
 class Error : public std::runtime_error {
 public:
     Error(SourceLocation location, std::string message)
-        : std::runtime_error(format_diagnostic({Severity::error, location, message})),
+        : std::runtime_error(format_diagnostic({Severity::error, location, message, {}, {}})),
           location_(std::move(location)),
           message_(std::move(message)) {}
 

@@ -211,6 +211,10 @@ private:
 
     void object(const Object& o, int level) {
         indent(level);
+        if (const auto* skipped = std::get_if<SkippedShape>(&o.shape)) {  // photon kept no geometry to write
+            out_ << "// a `" << skipped->keyword << "` photon skipped\n";
+            return;
+        }
         if (const auto* l = std::get_if<LightSource>(&o.shape)) {
             light(*l, level);
         } else if (const auto* s = std::get_if<SphereShape>(&o.shape)) {

@@ -77,6 +77,20 @@ struct MaterialBlock {
     SourceLocation at;
 };
 
+/// A declared blend map (`color_map`, `pigment_map`, `texture_map`, `normal_map`, ...): what photon
+/// keeps of it, each entry's value and colour (a pigment or texture entry reduced to its colour),
+/// and for a texture_map the first entry's finish.
+struct BlendMap {
+    std::string keyword;
+    std::vector<std::pair<double, Color>> entries;
+    std::optional<Finish> finish;
+};
+
+/// A declared block photon reads but does not render (`fog`, `media`, `normal`, `sky_sphere`, ...).
+struct IgnoredBlock {
+    std::string keyword;
+};
+
 struct UserFunction;  // user_function.hpp
 /// A block photon reads but does not evaluate (`#declare Map = color_map { ... }`, a `normal`,
 /// `media`, ...): declared so that the file reads on; using it where photon needs its content
@@ -107,7 +121,7 @@ struct Array {
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
                                CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
-                               SkippedBlock>;
+                               SkippedBlock, BlendMap, IgnoredBlock>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -154,8 +168,12 @@ struct Value {
             return "a spline";
         case 12:
             return "a function";
-        default:
+        case 13:
             return "a `" + std::get<SkippedBlock>(v).keyword + "` (read, not used by photon)";
+        case 14:
+            return "a " + std::get<BlendMap>(v).keyword;
+        default:
+            return "a " + std::get<IgnoredBlock>(v).keyword;
     }
 }
 

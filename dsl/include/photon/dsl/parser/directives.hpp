@@ -206,8 +206,15 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
         parse_material(kw, holder);
         return MaterialBlock{std::move(holder.texture), std::move(holder.interior), kw.location};
     }
-    if (one_of(w, object_keywords)) return parse_object(next());
-    if (one_of(w, unsupported_objects)) unsupported_object(t);
+    if (is_object_keyword(w)) return parse_object(next());
+    // Maps photon averages (parser/patterns.hpp); the blocks it reads and ignores, kept so that
+    // their use by name is known (the warning comes where they are used).
+    if (one_of(w, blend_map_keywords)) return parse_blend_map(next());
+    if (one_of(w, {"fog", "rainbow", "sky_sphere", "media", "normal", "density"})) {
+        const Nest nest(*this, t.location);
+        skip_block(next());
+        return IgnoredBlock{w};
+    }
     if (const Value* v = lookup(w); v && std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data)) {
         const ValueData f = v->data;
         const Token name = next();  // `#declare G = F` copies the function, `F(...)` calls it

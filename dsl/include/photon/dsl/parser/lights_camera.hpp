@@ -2,9 +2,12 @@
 #pragma once
 // Light sources (point, spotlight, area_light, their photons block) and the camera.
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
+
+inline constexpr double radians_per_degree = 3.14159265358979323846 / 180.0;
 
 inline Object Parser::parse_light(const Token& kw) {
     open_block(kw);
@@ -47,10 +50,12 @@ inline Object Parser::parse_light(const Token& kw) {
             spot.point_at = parse_vector("the point after `point_at`");
         } else if (w == "radius" || w == "falloff") {
             SourceLocation at;
-            const double a = parse_float("the angle in degrees after `" + w + "`", &at);
-            // POV-Ray takes any angle (it uses the cosine): `radius -90` turns the soft edge off.
-            if (!(a >= -180 && a <= 180))
-                fail(at, "`" + w + "` must be an angle from -180 to 180 degrees, found " + format_number(a));
+            double a = parse_float("the angle in degrees after `" + w + "`", &at);
+            if (light.written.count("cylinder")) continue;  // a distance there, and photon uses a point light
+            // POV-Ray keeps only cos(angle), so any angle means the one from 0 to 180 degrees with that
+            // cosine: the `radius -90 falloff 90` of POV-Ray's Cornell box is a hemisphere.
+            if (!std::isfinite(a)) fail(at, "`" + w + "` must be a finite angle, found " + format_number(a));
+            if (!(a >= 0 && a <= 180)) a = std::acos(std::clamp(std::cos(a * radians_per_degree), -1.0, 1.0)) / radians_per_degree;
             (w == "radius" ? spot.radius : spot.falloff) = a;
         } else if (w == "tightness") {
             spot.tightness = parse_nonnegative("`tightness`");
@@ -90,7 +95,7 @@ inline Object Parser::parse_light(const Token& kw) {
             const Nest nest(*this, t.location);
             open_block(t);
             const Token ok = next();
-            if (ok.kind != TokenKind::identifier || !one_of(ok.text, object_keywords))
+            if (ok.kind != TokenKind::identifier || !is_object_keyword(ok.text))
                 fail_expected("an object in `looks_like`", ok);
             Object shape = parse_object(ok);
             parse_modifiers(t, shape);
@@ -100,11 +105,25 @@ inline Object Parser::parse_light(const Token& kw) {
             parse_optional_bool();
         } else if (w == "photons") {
             parse_light_photons(t, light);
-        } else if (w == "parallel" || w == "cylinder" || w == "projected_through") {
-            fail(t.location,
-                 "photon does not support `" + w + "` lights: use a point light, an area light or a spotlight");
+        } else if (w == "parallel" || w == "cylinder") {
+            degrade(t.location, degraded::approximated_light, w,
+                    "a `" + w + "` light is approximated by a " + (is_spot ? "spotlight" : "point light") +
+                        " at the light's position: photon has no " + w + " lights yet");
+        } else if (w == "projected_through") {
+            const Nest nest(*this, t.location);
+            open_block(t);
+            const Token o = next();
+            const Value* v = o.kind == TokenKind::identifier ? lookup(o.text) : nullptr;
+            if (o.kind == TokenKind::identifier && is_object_keyword(o.text))
+                parse_object(o);
+            else if (!v || !std::holds_alternative<Object>(v->data))
+                fail_expected("an object in `projected_through`", o);
+            close_block(t, "nothing more");
+            degrade(t.location, degraded::ignored_effect, w,
+                    "`projected_through` is ignored: the light shines everywhere, not only through the object");
         }
     }
+    if (light.written.count("cylinder")) is_spot = false;  // approximated by a point light, as warned
     if (is_spot) light.spotlight = spot;
     if (light.area) {
         light.area->adaptive = area.adaptive, light.area->jitter = area.jitter;
@@ -113,7 +132,7 @@ inline Object Parser::parse_light(const Token& kw) {
                light.written.count("jitter")) {
         warn(kw.location, "`circular`, `orient`, `adaptive` and `jitter` have no effect without `area_light`");
     }
-    if (!is_spot)
+    if (!is_spot && !light.written.count("cylinder") && !light.written.count("parallel"))
         for (const char* k : {"point_at", "radius", "falloff", "tightness"})
             if (light.written.count(k))
                 warn(light.written[k], std::string("`") + k + "` has no effect without `spotlight`");
@@ -148,6 +167,7 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     CameraDescription cam;
+    std::string other_type;  ///< a camera type photon approximates, as warned
     take_identifier(cam, "a camera identifier or a camera item");
     cam.at = kw.location;
     for (;;) {
@@ -156,8 +176,19 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
         if (try_transform(cam.transform)) continue;
         const std::string& w = t.text;
         if (one_of(w, {"orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic", "spherical", "cylinder",
-                       "mesh_camera"}))
-            fail(t.location, "photon supports only the `perspective` camera, found `" + w + "`");
+                       "mesh_camera"})) {
+            next();
+            if (w == "cylinder") parse_integer("the type of the cylinder camera (1 to 4)", 1, 4);
+            if (w == "mesh_camera") {
+                const Nest inner(*this, t.location);
+                skip_block(t);
+            }
+            other_type = w;
+            degrade(t.location, degraded::approximated_camera, w,
+                    "the `" + w + "` camera is approximated by a perspective camera with the same location, "
+                    "direction, right and up: photon has only the perspective camera yet");
+            continue;
+        }
         if (!one_of(w, camera_keywords)) break;
         next();
         cam.written[w] = t.location;
@@ -177,16 +208,24 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
         else if (w == "angle") {
             SourceLocation at;
             const double a = parse_float("the horizontal field of view in degrees after `angle`", &at);
+            if (accept_symbol(",")) parse_float("the vertical angle of the camera");
+            if (!other_type.empty() && !(a > 0 && a < 180)) {  // a fisheye's 360, say: a perspective camera cannot
+                degrade(at, degraded::approximated_camera, "angle",
+                        "the `" + other_type + "` camera's angle " + format_number(a) +
+                            " is ignored: a perspective camera sees less than 180 degrees");
+                continue;
+            }
             if (!(a > 0 && a < 180))
                 fail(at, "camera `angle` must be between 0 and 180 degrees, found " + format_number(a));
             cam.angle = a;
         } else if (w == "focal_point") {
             parse_vector("the focal point");
-            warn(t.location, "`focal_point` is ignored: photon's camera is a pinhole");
+            degrade(t.location, degraded::approximated_camera, w, "`focal_point` is ignored: photon's camera is a pinhole");
         } else {
             parse_float("`" + w + "`");
             if (w == "aperture")
-                warn(t.location, "`aperture` is ignored: photon's camera is a pinhole (no depth of field)");
+                degrade(t.location, degraded::approximated_camera, w,
+                        "`aperture` is ignored: photon's camera is a pinhole (no depth of field)");
         }
     }
     close_block(kw, "a camera item (location, look_at, up, right, direction, sky, angle, translate, rotate)",

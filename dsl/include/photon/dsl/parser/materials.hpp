@@ -2,7 +2,9 @@
 #pragma once
 // Materials: texture, pigment, finish (with reflection) and interior blocks, and declared ones.
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
+#include "patterns.hpp"
 
 namespace photon::dsl::detail {
 
@@ -25,28 +27,31 @@ bool Parser::take_identifier(T& out, const std::string& what, bool numbers_allow
                          position_in(v->at, t.location) + ")");
 }
 
+// PIGMENT: pigment { PIGMENT_BODY }
 inline Pigment Parser::parse_pigment(const Token& kw, Pigment p) {
     const Nest nest(*this, kw.location);
     open_block(kw);
+    p = parse_pigment_body(kw, p);
+    close_block(kw, "a colour or a pattern", {"color", "rgb", "rgbf", "rgbt", "rgbft"});
+    return p;
+}
+
+// PIGMENT_BODY: [PIGMENT_IDENT] {COLOR | PATTERN_ITEM | TRANSFORMATION | quick_color COLOR}
+inline Pigment Parser::parse_pigment_body(const Token& kw, Pigment p) {
     p.at = kw.location;
     take_identifier(p, "a colour or a pigment identifier", true);
     Transform ignored;
+    PatternState st;
     for (;;) {
         const Token t = peek();
-        if (t.is_symbol("}")) break;
+        if (t.is_symbol("}") || t.is_symbol("]")) break;
         if (try_transform(ignored)) continue;
         if (t.is_identifier("quick_color") || t.is_identifier("quick_colour")) {
             next();
             parse_color("the quick colour");
             continue;
         }
-        if (t.kind == TokenKind::identifier &&
-            one_of(t.text,
-                   {"color_map", "colour_map", "pigment_map", "image_map", "checker",    "hexagon",  "brick",
-                    "gradient",  "bozo",       "granite",     "marble",    "wood",       "agate",    "spotted",
-                    "leopard",   "onion",      "radial",      "ripples",   "waves",      "wrinkles", "bumps",
-                    "dents",     "crackle",    "average",     "object",    "uv_mapping", "function", "pattern"}))
-            fail(t.location, "photon supports only solid colours in `pigment`, found `" + t.text + "`");
+        if (parse_pattern_item(st)) continue;
         if (starts_expression(t) || t.is_identifier("color") || t.is_identifier("colour")) {
             p.color = parse_color("the colour of the pigment");
             continue;
@@ -58,7 +63,16 @@ inline Pigment Parser::parse_pigment(const Token& kw, Pigment p) {
         }
         break;
     }
-    close_block(kw, "a colour", {"color", "rgb", "rgbf", "rgbt", "rgbft"});
+    if (!st.pattern.text.empty() || st.map) {
+        const std::string name = st.pattern.text.empty() ? st.map->keyword : st.pattern.text;
+        const SourceLocation at = st.pattern.text.empty() ? kw.location : st.pattern.location;
+        std::string how;
+        p.color = pattern_average(st, p.color, how);
+        degrade(at, degraded::approximated_pigment, name,
+                name == "image_map" ? "`image_map` is approximated by " + how
+                                    : "`" + name + "` is approximated by " + how + ", " + describe_average(p.color) +
+                                          ": photon has no patterned pigments yet");
+    }
     return p;
 }
 
@@ -111,8 +125,11 @@ inline Finish Parser::parse_finish(const Token& kw, Finish f) {
             skip_block(t);
         } else if (w == "crand") {
             parse_float("`crand`");
-        } else {
-            fail(t.location, "`subsurface` is not supported by photon");
+        } else {  // subsurface { translucency COLOR ... }
+            const Nest inner(*this, t.location);
+            skip_block(t);
+            degrade(t.location, degraded::ignored_effect, "subsurface",
+                    "`subsurface` is ignored: photon has no subsurface light transport");
         }
     }
     close_block(kw,
@@ -184,13 +201,15 @@ inline Interior Parser::parse_interior(const Token& kw, Interior in) {
             next();
             const double v = parse_float("`" + t.text + "`");
             if (v != 0 && !(t.text == "dispersion" && v == 1) && t.text != "dispersion_samples")
-                warn(t.location, "interior `" + t.text + "` is ignored: photon's glass is clear, with one ior");
+                degrade(t.location, degraded::ignored_effect, t.text,
+                        "interior `" + t.text + "` is ignored: photon's glass is clear, with one ior");
         } else if (t.is_identifier("fade_color") || t.is_identifier("fade_colour")) {
             next();
             parse_color("the fade colour");
-            warn(t.location, "interior `" + t.text + "` is ignored: photon's glass does not absorb");
+            degrade(t.location, degraded::ignored_effect, t.text,
+                    "interior `" + t.text + "` is ignored: photon's glass does not absorb");
         } else if (t.is_identifier("media")) {
-            fail(t.location, "`media` is not supported by photon");
+            skip_effect(next());
         } else {
             break;
         }
@@ -199,35 +218,82 @@ inline Interior Parser::parse_interior(const Token& kw, Interior in) {
     return in;
 }
 
+// TEXTURE: texture { TEXTURE_BODY }
 inline Texture Parser::parse_texture(const Token& kw, Texture tex) {
     const Nest nest(*this, kw.location);
     open_block(kw);
+    tex = parse_texture_body(kw, tex);
+    close_block(kw, "`pigment`, `finish` or `normal`", {"pigment", "finish", "normal"});
+    return tex;
+}
+
+// TEXTURE_BODY: [TEXTURE_IDENT] {pigment {..} | finish {..} | normal {..} | TRANSFORMATION}
+//             | PATTERN_ITEM (checker TEXTURE TEXTURE, texture_map, ...) | tiles { TEXTURE_BODY tile2 TEXTURE_BODY }
+//             | material_map { BITMAP_TYPE "file" [MODIFIERS] {texture {..}} }
+inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
     tex.at = kw.location;
-    if (!take_identifier(tex, "a texture identifier, `pigment` or `finish`")) {
-        if (peek().kind == TokenKind::identifier &&
-            one_of(peek().text, {"material_map", "tiles", "checker", "gradient", "texture_map", "image_pattern"}))
-            fail(peek().location,
-                 "photon supports only plain textures (one pigment and one finish), found `" + peek().text + "`");
-    }
+    take_identifier(tex, "a texture identifier, `pigment` or `finish`");
     tex.at = kw.location;
     Transform ignored;
+    PatternState st;
     for (;;) {
         const Token t = peek();
-        if (t.is_identifier("pigment"))
+        if (t.is_identifier("pigment")) {
             tex.pigment = parse_pigment(next(), tex.pigment);
-        else if (t.is_identifier("finish"))
+        } else if (t.is_identifier("finish")) {
             tex.finish = parse_finish(next(), tex.finish);
-        else if (t.is_identifier("normal")) {
-            next();
-            skip_block(t);
-            warn(t.location, "`normal` is ignored: photon does not perturb normals");
-        } else if (try_transform(ignored)) {
+        } else if (t.is_identifier("normal")) {
+            skip_effect(next());
+        } else if (t.is_identifier("tiles")) {
+            st.pattern = next();
+            const Nest nest(*this, t.location);
+            open_block(t);
+            const Texture a = parse_texture_body(t, default_texture_);
+            const Token tile2 = next();
+            if (!tile2.is_identifier("tile2")) fail_expected("`tile2` and the second texture in `tiles`", tile2);
+            const Texture b = parse_texture_body(tile2, default_texture_);
+            close_block(t, "the second texture");
+            st.listed = {a.pigment.color, b.pigment.color};
+            st.finish = a.finish;
+        } else if (t.is_identifier("material_map")) {
+            st.pattern = next();
+            const Nest nest(*this, t.location);
+            open_block(t);
+            while (!peek().is_identifier("texture") && !peek().is_symbol("}")) {  // the image and its options
+                if (peek().kind == TokenKind::end_of_file) break;
+                next();
+            }
+            while (peek().is_identifier("texture")) {
+                const Texture x = parse_texture(next(), default_texture_);
+                st.listed.push_back(x.pigment.color);
+                if (!st.finish) st.finish = x.finish;
+            }
+            close_block(t, "a `texture`");
+        } else if (parse_pattern_item(st) || try_transform(ignored)) {
             continue;
         } else {
             break;
         }
     }
-    close_block(kw, "`pigment`, `finish` or `normal`", {"pigment", "finish", "normal"});
+    if (!st.pattern.text.empty() || st.map) {
+        const std::string name = st.pattern.text.empty() ? st.map->keyword : st.pattern.text;
+        const SourceLocation at = st.pattern.text.empty() ? kw.location : st.pattern.location;
+        std::string how;
+        if (name == "material_map" || name == "tiles") {
+            Color sum;
+            for (const Color& c : st.listed) sum.rgb += c.rgb, sum.filter += c.filter, sum.transmit += c.transmit;
+            const double n = double(std::max<std::size_t>(1, st.listed.size()));
+            tex.pigment.color = {sum.rgb / n, sum.filter / n, sum.transmit / n};
+            how = "the mean of its textures' colours";
+        } else {
+            tex.pigment.color = pattern_average(st, tex.pigment.color, how);
+        }
+        if (st.finish) tex.finish = *st.finish;
+        if (st.map && st.map->finish) tex.finish = *st.map->finish;
+        degrade(at, degraded::approximated_texture, name,
+                "`" + name + "` is approximated by one texture: " + how + ", " + describe_average(tex.pigment.color) +
+                    ", with the first texture's finish: photon has no patterned textures yet");
+    }
     return tex;
 }
 

@@ -2,16 +2,10 @@
 #pragma once
 // Objects: the shapes, union/merge, `object { }`, meshes and the object modifiers.
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
-
-inline void Parser::unsupported_object(const Token& t) {
-    if (t.text == "difference" || t.text == "intersection")
-        fail(t.location, "photon does not support the CSG operation `" + t.text + "`: only `union` and `merge`");
-    fail(t.location, "photon does not support the object `" + t.text +
-                         "`: use sphere, box, plane, triangle, mesh, union or object");
-}
 
 inline Texture& Parser::ensure_texture(Object& obj) {
     if (!obj.texture) obj.texture = default_texture_;
@@ -29,6 +23,7 @@ inline Object Parser::parse_object(const Token& kw) {
     const Nest nest(*this, kw.location);
     const std::string& w = kw.text;
     if (w == "light_source") return parse_light(kw);
+    if (one_of(w, unsupported_objects)) return parse_skipped_object(kw);
     Object obj;
     obj.at = kw.location;
     open_block(kw);
@@ -65,8 +60,12 @@ inline Object Parser::parse_object(const Token& kw) {
             const Nest inner(*this, tk.location);
             open_block(tk);
             tris->push_back(parse_triangle_corners(tk).vertices);
-            if (peek().is_identifier("texture"))
-                fail(peek().location, "per-triangle textures in a `mesh` are not supported: give the mesh one texture");
+            if (peek().is_identifier("texture")) {
+                const Token tt = next();
+                parse_texture(tt, default_texture_);
+                degrade(tt.location, degraded::approximated_texture, "texture",
+                        "a triangle's own `texture` in a `mesh` is ignored: photon gives the mesh one texture");
+            }
             close_block(tk, "the triangle's corners");
             if (tris->size() > options_.max_primitives)
                 fail(tk.location, "the scene is too large: more than " + std::to_string(options_.max_primitives) +
@@ -75,16 +74,18 @@ inline Object Parser::parse_object(const Token& kw) {
         if (tris->empty() && !file) fail_expected("`triangle` or `obj \"file.obj\"` in `mesh`", peek());
         obj.primitives = std::max<std::size_t>(1, tris->size());  // the file's triangles are counted when built
         obj.shape = MeshShape{std::move(tris), std::move(file)};
+    } else if (w == "mesh2") {
+        obj.shape = parse_mesh2(kw, obj);
     } else if (w == "union" || w == "merge") {
         UnionShape u;
         u.merge = w == "merge";
-        if (u.merge) warn(kw.location, "`merge` is read as `union`: photon keeps the inner surfaces");
+        if (u.merge)
+            degrade(kw.location, degraded::approximated_object, w,
+                    "`merge` is read as `union`: photon keeps the inner surfaces");
         obj.primitives = 0;
         for (;;) {
             const Token& t = peek();
-            if (t.kind != TokenKind::identifier) break;
-            if (one_of(t.text, unsupported_objects)) unsupported_object(t);
-            if (!one_of(t.text, object_keywords)) break;
+            if (t.kind != TokenKind::identifier || !is_object_keyword(t.text)) break;
             const Token ck = next();
             u.children.push_back(std::make_shared<const Object>(parse_object(ck)));
             add_primitives(obj, u.children.back()->primitives, ck.location);
@@ -93,10 +94,8 @@ inline Object Parser::parse_object(const Token& kw) {
         obj.shape = std::move(u);
     } else {  // object
         const Token t = peek();
-        if (t.kind == TokenKind::identifier && one_of(t.text, object_keywords) && t.text != "object") {
+        if (t.kind == TokenKind::identifier && is_object_keyword(t.text) && t.text != "object") {
             obj = parse_object(next());
-        } else if (t.kind == TokenKind::identifier && one_of(t.text, unsupported_objects)) {
-            unsupported_object(t);
         } else {
             const Value* v = t.kind == TokenKind::identifier ? lookup(t.text) : nullptr;
             if (!v) {
@@ -109,6 +108,10 @@ inline Object Parser::parse_object(const Token& kw) {
                      "expected an object identifier in `object`, found `" + t.text + "` (" + type_name(v->data) + ")");
             next();
             obj = std::get<Object>(v->data);
+            if (const auto* skipped = std::get_if<SkippedShape>(&obj.shape))
+                degrade(t.location, degraded::skipped_object, skipped->keyword,
+                        "`" + t.text + "` is a `" + skipped->keyword + "` (declared at " + position_in(v->at, t.location) +
+                            "): skipped, photon has no " + missing_shape(skipped->keyword) + " yet");
         }
         if (std::holds_alternative<LightSource>(obj.shape)) {
             while (try_transform(obj.transform)) {
@@ -146,7 +149,9 @@ inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {
             parse_vector("the normal at corner " + std::to_string(i + 1));
         }
     }
-    if (smooth) warn(kw.location, "`smooth_triangle` normals are ignored: photon shades triangles flat");
+    if (smooth)
+        degrade(kw.location, degraded::ignored_effect, kw.text,
+                "`smooth_triangle` normals are ignored: photon shades triangles flat");
     return t;
 }
 
@@ -177,7 +182,15 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         if (try_transform(obj.transform)) continue;
         const std::string& w = t.text;
         if (w == "texture") {
-            if (had_texture) fail(t.location, "layered textures are not supported: expected one `texture` per object");
+            if (had_texture) {
+                // POV-Ray layers each further texture on top of the first, which is the bottom one
+                // and the only one that must be opaque: the layers above are usually partly clear.
+                parse_texture(next(), default_texture_);
+                degrade(t.location, degraded::approximated_texture, "texture",
+                        "layered `texture`: photon uses the object's first (bottom) texture and ignores this "
+                        "layer on top of it");
+                continue;
+            }
             had_texture = true;
             obj.texture = parse_texture(next(), default_texture_);
         } else if (w == "pigment") {
@@ -189,9 +202,7 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
             tex.finish = parse_finish(next(), tex.finish);
             if (!tex.at.known()) tex.at = t.location;
         } else if (w == "normal") {
-            next();
-            skip_block(t);
-            warn(t.location, "`normal` is ignored: photon does not perturb normals");
+            skip_effect(next());
         } else if (w == "interior") {
             obj.interior = parse_interior(next(), obj.interior.value_or(Interior{}));
         } else if (w == "material") {
@@ -204,7 +215,7 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "inverse"})) {
             next();
             obj.ignored[w] = t.location;
-            warn(t.location, "`" + w + "` is ignored by photon");
+            degrade(t.location, degraded::ignored_effect, w, "`" + w + "` is ignored by photon");
         } else if (one_of(w, {"hollow", "sturm"})) {
             next();
             parse_optional_bool();
@@ -214,10 +225,11 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         } else if (w == "interior_texture") {
             next();
             parse_texture(t, default_texture_);
-            warn(t.location, "`interior_texture` is ignored: photon uses one texture for both sides");
+            degrade(t.location, degraded::approximated_texture, w,
+                    "`interior_texture` is ignored: photon uses one texture for both sides");
         } else if (w == "bounded_by" || w == "clipped_by") {
-            fail(t.location, "`" + w + "` is not supported by photon");
-        } else if (one_of(w, object_keywords) && std::holds_alternative<UnionShape>(obj.shape)) {
+            parse_bound_or_clip(next());
+        } else if (is_object_keyword(w) && std::holds_alternative<UnionShape>(obj.shape)) {
             fail(t.location,
                  "objects in `" + kw.text + "` must come before its modifiers: found `" + w + "` after a modifier");
         } else {

@@ -283,13 +283,14 @@ private:
     template <class T>
     bool take_identifier(T& out, const std::string& what, bool numbers_allowed = false);
     Pigment parse_pigment(const Token& kw, Pigment p);
+    Pigment parse_pigment_body(const Token& kw, Pigment p);
     Finish parse_finish(const Token& kw, Finish f);
     Reflection parse_reflection(const Token& kw);
     Interior parse_interior(const Token& kw, Interior in);
     Texture parse_texture(const Token& kw, Texture tex);
+    Texture parse_texture_body(const Token& kw, Texture tex);
 
     // objects.hpp
-    [[noreturn]] void unsupported_object(const Token& t);
     Texture& ensure_texture(Object& obj);
     void add_primitives(Object& obj, std::size_t n, const SourceLocation& at);
     Object parse_object(const Token& kw);
@@ -298,6 +299,25 @@ private:
     void parse_material(const Token& kw, Object& obj);
     void parse_modifiers(const Token& kw, Object& obj);
     ObjectPhotons parse_object_photons(const Token& kw);
+
+    // mesh2.hpp
+    MeshShape parse_mesh2(const Token& kw, Object& obj);
+
+    // degradation.hpp
+    void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
+                 const std::string& message);
+    Object parse_skipped_object(const Token& kw);
+    bool is_object_keyword(std::string_view w) const;
+    void parse_bound_or_clip(const Token& kw);
+    void skip_effect(const Token& kw);
+
+    // patterns.hpp
+    struct PatternState;
+    bool parse_pattern_item(PatternState& st);
+    Color parse_list_color(const std::string& what);
+    BlendMap parse_blend_map(const Token& kw);
+    void parse_blend_entry_body(const Token& kw, BlendMap& map);
+    Color pattern_average(const PatternState& st, const Color& fallback, std::string& how);
 
     // lights_camera.hpp
     Object parse_light(const Token& kw);

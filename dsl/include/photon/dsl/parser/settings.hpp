@@ -3,6 +3,7 @@
 // global_settings: POV-Ray's own items, its photons block, and the items of the settings table
 // (settings_table.hpp: photon's own settings and POV-Ray's max_trace_level).
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -47,7 +48,9 @@ inline void Parser::parse_global_settings(const Token& kw) {
         } else if (w == "photons") {
             parse_pov_photons(t);
         } else if (w == "subsurface") {
-            fail(t.location, "`subsurface` is not supported by photon");
+            skip_block(t);
+            degrade(t.location, degraded::ignored_effect, "subsurface",
+                    "`subsurface` is ignored: photon has no subsurface light transport");
         } else {  // charset, noise_generator, number_of_waves, max_intersections, irid_wavelength, hf_gray_16, mm_per_unit
             if (w == "irid_wavelength")
                 parse_color("the wavelengths");

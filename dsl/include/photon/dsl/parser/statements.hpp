@@ -2,6 +2,7 @@
 #pragma once
 // Top-level statements of a scene file, and the start of reading.
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -46,16 +47,17 @@ inline void Parser::parse_statements() {
                 const Color c = parse_color("the background colour");
                 close_block(kw, "nothing more");
                 if (c.rgb != Vector3(0.0))
-                    warn(kw.location, "the background colour is ignored: photon's background is black");
+                    degrade(kw.location, degraded::ignored_effect, "background",
+                            "the background colour is ignored: photon's background is black");
                 continue;
             }
-            if (one_of(w, {"sky_sphere", "fog", "rainbow", "media", "photons", "radiosity"}))
-                fail(t.location,
-                     "`" + w + "` is not supported by photon" +
-                         std::string(w == "photons" || w == "radiosity" ? " here: it belongs in `global_settings`"
-                                                                        : ""));
-            if (one_of(w, unsupported_objects)) unsupported_object(t);
-            if (one_of(w, object_keywords)) {
+            if (one_of(w, {"sky_sphere", "fog", "rainbow", "media"})) {
+                skip_effect(next());
+                continue;
+            }
+            if (one_of(w, {"photons", "radiosity"}))
+                fail(t.location, "`" + w + "` is not supported by photon here: it belongs in `global_settings`");
+            if (is_object_keyword(w)) {
                 Object obj = parse_object(next());
                 if (!std::holds_alternative<LightSource>(obj.shape)) obj.default_texture = default_texture_;
                 primitives += obj.primitives;

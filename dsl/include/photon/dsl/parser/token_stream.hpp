@@ -18,7 +18,7 @@ inline void Parser::fail_expected(const std::string& expected, const Token& foun
 
 inline void Parser::warn(const SourceLocation& at, const std::string& message) {
     if (!warned_.insert(at.str() + '\x1f' + message).second) return;
-    if (options_.diagnostics) options_.diagnostics({Severity::warning, at, message});
+    if (options_.diagnostics) options_.diagnostics({Severity::warning, at, message, {}, {}});
 }
 
 inline std::string Parser::too_large_message(std::size_t bytes) const {

@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Graceful degradation: constructs photon reads but cannot render. Each is read with POV-Ray's
+// syntax (its own where it is short, else as a balanced block through the token stream, so that
+// directives inside still run), then skipped or approximated with a warning at its place that
+// says what photon does instead. The warning's kind and keyword feed `photon check`'s summary;
+// --strict makes every one of them an error. Syntax errors stay errors.
+
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+/// Kinds of the warnings about constructs photon reads but does not render.
+namespace degraded {
+inline constexpr std::string_view skipped_object = "skipped object";
+inline constexpr std::string_view approximated_pigment = "approximated pigment";
+inline constexpr std::string_view approximated_texture = "approximated texture";
+inline constexpr std::string_view approximated_object = "approximated object";
+inline constexpr std::string_view approximated_camera = "approximated camera";
+inline constexpr std::string_view approximated_light = "approximated light";
+inline constexpr std::string_view ignored_effect = "ignored effect";
+}  // namespace degraded
+
+inline void Parser::degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
+                            const std::string& message) {
+    if (!warned_.insert(at.str() + '\x1f' + message).second) return;
+    if (options_.diagnostics)
+        options_.diagnostics({Severity::warning, at, message, std::string(kind), std::string(keyword)});
+}
+
+/// What photon lacks, for "`x` is skipped: photon has no ... yet".
+inline std::string missing_shape(const std::string& keyword) {
+    if (keyword == "difference" || keyword == "intersection") return "CSG " + keyword;
+    if (keyword == "text") return "text object";
+    return keyword;
+}
+
+// SKIPPED_OBJECT: cylinder { V, V, F [open] MODS } | cone { V, F, V, F [open] MODS }
+//               | disc { V, V, F [, F] MODS } | torus { F, F MODS }
+//               | difference|intersection { OBJECT {OBJECT} MODS } | KEYWORD { balanced tokens }
+inline Object Parser::parse_skipped_object(const Token& kw) {
+    const std::string& w = kw.text;
+    Object obj;
+    obj.at = kw.location;
+    obj.shape = SkippedShape{w};
+    degrade(kw.location, degraded::skipped_object, w,
+            "`" + w + "` is skipped: photon has no " + missing_shape(w) + " yet");
+    if (!one_of(w, {"cylinder", "cone", "disc", "torus", "difference", "intersection"})) {
+        skip_block(kw);
+        return obj;
+    }
+    open_block(kw);
+    if (w == "cylinder") {
+        parse_vector("the base point of the cylinder");
+        optional_comma();
+        parse_vector("the cap point of the cylinder");
+        optional_comma();
+        parse_float("the radius of the cylinder");
+    } else if (w == "cone") {
+        parse_vector("the base point of the cone");
+        optional_comma();
+        parse_float("the base radius of the cone");
+        optional_comma();
+        parse_vector("the cap point of the cone");
+        optional_comma();
+        parse_float("the cap radius of the cone");
+    } else if (w == "disc") {
+        parse_vector("the centre of the disc");
+        optional_comma();
+        parse_vector("the normal of the disc");
+        optional_comma();
+        parse_float("the radius of the disc");
+        if (accept_symbol(",")) parse_float("the hole radius of the disc");
+    } else if (w == "torus") {
+        parse_float("the major radius of the torus");
+        optional_comma();
+        parse_float("the minor radius of the torus");
+    } else {  // difference, intersection: their objects, each read (and skipped with this one)
+        std::size_t children = 0;
+        while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) {
+            parse_object(next());
+            ++children;
+        }
+        if (children == 0) fail_expected("an object in `" + w + "`", peek());
+    }
+    if (peek().is_identifier("open")) next();
+    parse_modifiers(kw, obj);
+    close_block(kw, "an object modifier (texture, pigment, finish, interior, translate, rotate, scale, ...)",
+                modifier_keywords);
+    return obj;
+}
+
+inline bool Parser::is_object_keyword(std::string_view w) const {
+    return one_of(w, object_keywords) || one_of(w, unsupported_objects);
+}
+
+// BOUNDED_BY: bounded_by { OBJECT {OBJECT} | clipped_by }   CLIPPED_BY: clipped_by { OBJECT {OBJECT} | bounded_by }
+inline void Parser::parse_bound_or_clip(const Token& kw) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    const char* other = kw.text == "bounded_by" ? "clipped_by" : "bounded_by";
+    if (peek().is_identifier(other)) {
+        next();
+    } else {
+        while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) parse_object(next());
+    }
+    close_block(kw, std::string("an object or `") + other + "`");
+    if (kw.text == "bounded_by")
+        degrade(kw.location, degraded::ignored_effect, kw.text,
+                "`bounded_by` is ignored: photon bounds every object itself (the image does not change)");
+    else
+        degrade(kw.location, degraded::ignored_effect, kw.text,
+                "`clipped_by` is ignored: photon renders the whole object, unclipped");
+}
+
+/// What photon does instead of the effect `keyword` (fog, rainbow, sky_sphere, media).
+inline std::string effect_instead(const std::string& keyword) {
+    if (keyword == "fog") return "photon renders without fog";
+    if (keyword == "rainbow") return "photon renders no rainbow";
+    if (keyword == "sky_sphere") return "photon's background is black";
+    if (keyword == "media") return "photon renders no participating media (the space between surfaces is empty)";
+    if (keyword == "normal") return "photon does not perturb normals";
+    return "photon does not render it";
+}
+
+// EFFECT: fog|rainbow|sky_sphere|media { balanced tokens }
+inline void Parser::skip_effect(const Token& kw) {
+    const Nest nest(*this, kw.location);
+    skip_block(kw);
+    degrade(kw.location, degraded::ignored_effect, kw.text, "`" + kw.text + "` is ignored: " + effect_instead(kw.text));
+}
+
+}  // namespace photon::dsl::detail

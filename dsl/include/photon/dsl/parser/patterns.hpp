@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// Patterns photon reads but does not evaluate (checker, marble, image_map, ...), with their blend
+// maps (color_map, pigment_map, texture_map, ...) and wave modifiers. A patterned pigment or
+// texture becomes one colour: the pattern's average as POV-Ray would colour it (a listed
+// pattern's mean colour, a map's average over [0, 1] as POV-Ray interpolates it), said in a warning.
+
+#include <cstdio>
+
+#include "degradation.hpp"
+#include "parser_class.hpp"
+
+namespace photon::dsl::detail {
+
+/// Patterns whose colours (pigments, textures) are listed after the keyword.
+inline constexpr std::string_view listed_patterns[] = {"checker", "hexagon",    "brick",
+                                                       "cubic",   "triangular", "square"};
+/// Patterns whose value in [0, 1] picks a colour from a map; `object` and `average` are read apart.
+inline constexpr std::string_view mapped_patterns[] = {
+    "gradient",  "bozo",    "spotted",   "granite",     "marble",  "wood",    "agate",  "leopard",
+    "onion",     "radial",  "ripples",   "waves",       "wrinkles", "bumps",  "dents",  "crackle",
+    "cells",     "planar",  "spherical", "cylindrical", "boxed",   "spiral1", "spiral2", "quilted",
+    "julia",     "mandel",  "magnet",    "pavement",    "tiling",  "aoi",     "slope",  "function",
+    "facets",    "pigment_pattern", "image_pattern", "density_file"};
+/// Pattern and wave modifiers followed by one number or vector.
+inline constexpr std::string_view valued_modifiers[] = {
+    "turbulence", "octaves", "omega",  "lambda", "frequency", "phase",  "mortar",          "brick_size",
+    "agate_turb", "metric",  "offset", "form",   "control0",  "control1", "number_of_sides", "number_of_tiles",
+    "exponent",   "orientation", "dist_exp", "noise_generator"};
+/// Pattern and wave modifiers without a value.
+inline constexpr std::string_view bare_modifiers[] = {"ramp_wave",  "triangle_wave", "sine_wave", "scallop_wave",
+                                                      "cubic_wave", "solid",         "uv_mapping", "planar_mapping"};
+
+struct Parser::PatternState {
+    Token pattern;                  ///< the pattern keyword; empty text when none was written
+    std::vector<Color> listed;      ///< colours listed after checker, hexagon, brick, object ...
+    std::optional<Finish> finish;   ///< the first listed texture's finish (texture patterns)
+    std::optional<BlendMap> map;
+    Vector3 brick_size{8, 3, 4.5};  ///< POV-Ray's defaults
+    double mortar = 0.5;
+};
+
+/// `rgb <r, g, b>` with three decimals, for messages.
+inline std::string describe_average(const Color& c) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "rgb <%.3g, %.3g, %.3g>", c.rgb.x, c.rgb.y, c.rgb.z);
+    std::string s = buf;
+    if (c.filter != 0 || c.transmit != 0) {
+        std::snprintf(buf, sizeof buf, " (filter %.3g, transmit %.3g)", c.filter, c.transmit);
+        s += buf;
+    }
+    return s;
+}
+
+inline Color mix(const Color& a, const Color& b, double t) {
+    return {a.rgb + (b.rgb - a.rgb) * t, a.filter + (b.filter - a.filter) * t,
+            a.transmit + (b.transmit - a.transmit) * t};
+}
+
+/// The colour POV-Ray's blend map gives at `x`: the first entry's below it, the last's above,
+/// linear between neighbours (entries in the order written, as POV-Ray searches them).
+inline Color blend_at(const std::vector<std::pair<double, Color>>& entries, double x) {
+    if (x <= entries.front().first) return entries.front().second;
+    for (std::size_t i = 1; i < entries.size(); ++i) {
+        const auto& [v0, c0] = entries[i - 1];
+        const auto& [v1, c1] = entries[i];
+        if (x < v1) return v1 > v0 ? mix(c0, c1, (x - v0) / (v1 - v0)) : c1;
+    }
+    return entries.back().second;
+}
+
+/// The map's average over [0, 1]. The map is linear between the entries' values, so the
+/// value at each piece's midpoint times its width is exact (and never falls on a step).
+inline Color blend_average(const std::vector<std::pair<double, Color>>& entries) {
+    if (entries.empty()) return {};
+    std::vector<double> cuts{0.0, 1.0};
+    for (const auto& e : entries)
+        if (e.first > 0 && e.first < 1) cuts.push_back(e.first);
+    std::sort(cuts.begin(), cuts.end());
+    Color sum;
+    for (std::size_t i = 1; i < cuts.size(); ++i) {
+        const double w = cuts[i] - cuts[i - 1];
+        if (w <= 0) continue;
+        const Color c = blend_at(entries, 0.5 * (cuts[i - 1] + cuts[i]));
+        sum.rgb += c.rgb * w, sum.filter += c.filter * w, sum.transmit += c.transmit * w;
+    }
+    return sum;
+}
+
+/// POV-Ray's own colour map for a pattern written without one (core/material/pattern.cpp).
+inline std::vector<std::pair<double, Color>> default_color_map(const std::string& pattern) {
+    auto rgb = [](double r, double g, double b) { return Color{{r, g, b}, 0, 0}; };
+    if (pattern == "agate")
+        return {{0.0, rgb(1, 1, 1)},      {0.5, rgb(0.95, 0.75, 0.5)}, {0.5, rgb(0.9, 0.7, 0.5)},
+                {0.6, rgb(0.9, 0.7, 0.4)}, {0.6, rgb(1.0, 0.7, 0.4)},  {1.0, rgb(0.6, 0.3, 0.0)}};
+    if (pattern == "bozo")
+        return {{0.4, rgb(1, 1, 1)}, {0.4, rgb(0, 1, 0)}, {0.6, rgb(0, 1, 0)},
+                {0.6, rgb(0, 0, 1)}, {0.8, rgb(0, 0, 1)}, {0.8, rgb(1, 0, 0)}};
+    if (pattern == "marble") return {{0.0, rgb(0.9, 0.8, 0.8)}, {0.9, rgb(0.9, 0.08, 0.08)}, {0.9, rgb(0, 0, 0)}};
+    if (pattern == "radial")
+        return {{0.0, rgb(0, 1, 1)}, {0.333, rgb(1, 1, 0)}, {0.666, rgb(1, 0, 1)}, {1.0, rgb(0, 1, 1)}};
+    if (pattern == "wood") return {{0.6, rgb(0.666, 0.312, 0.2)}, {0.6, rgb(0.4, 0.1333, 0.066)}};
+    return {{0.0, rgb(0, 0, 0)}, {1.0, rgb(1, 1, 1)}};
+}
+
+/// POV-Ray's colours for a listed pattern's entries that were not written.
+inline std::vector<Color> default_listed_colors(const std::string& pattern) {
+    auto rgb = [](double r, double g, double b) { return Color{{r, g, b}, 0, 0}; };
+    if (pattern == "checker" || pattern == "object") return {rgb(0, 0, 1), rgb(0, 1, 0)};
+    if (pattern == "hexagon") return {rgb(0, 0, 1), rgb(0, 1, 0), rgb(1, 0, 0)};
+    if (pattern == "brick") return {rgb(0.5, 0.5, 0.5), rgb(0.6, 0.15, 0.15)};
+    if (pattern == "square") return {rgb(1, 0, 0), rgb(0, 1, 0), rgb(0, 0, 1), rgb(1, 1, 0)};
+    return {rgb(1, 0, 0), rgb(0, 1, 0), rgb(0, 0, 1), rgb(1, 1, 0), rgb(0, 1, 1), rgb(1, 0, 1)};
+}
+
+// LIST_ITEM: COLOR | pigment { PIGMENT } | PIGMENT_IDENT | texture { TEXTURE } | TEXTURE_IDENT
+inline Color Parser::parse_list_color(const std::string& what) {
+    const Token t = peek();
+    if (t.is_identifier("pigment")) return parse_pigment(next(), Pigment{}).color;
+    if (t.is_identifier("texture")) return parse_texture(next(), default_texture_).pigment.color;
+    if (t.kind == TokenKind::identifier) {
+        if (const Value* v = lookup(t.text)) {
+            // Copied before next(), which may run a directive that changes the declarations.
+            if (const auto* p = std::get_if<Pigment>(&v->data)) {
+                const Color c = p->color;
+                next();
+                return c;
+            }
+            if (const auto* tx = std::get_if<Texture>(&v->data)) {
+                const Color c = tx->pigment.color;
+                next();
+                return c;
+            }
+        }
+    }
+    return parse_color(what);
+}
+
+/// True when `t` may start an entry of a listed pattern.
+inline bool starts_list_item(const Token& t, bool expression, const Value* v) {
+    if (expression || t.is_identifier("color") || t.is_identifier("colour") || t.is_identifier("pigment") ||
+        t.is_identifier("texture"))
+        return true;
+    return v && (std::holds_alternative<Pigment>(v->data) || std::holds_alternative<Texture>(v->data));
+}
+
+// PATTERN_ITEM: LISTED_PATTERN [ITEM {[,] ITEM}] | object { OBJECT [ITEM [,] ITEM] } | MAPPED_PATTERN [ARGS]
+//             | average | image_map { ... } | BLEND_MAP | MODIFIER [VALUE] | warp { ... }
+inline bool Parser::parse_pattern_item(PatternState& st) {
+    const Token t = peek();
+    if (t.kind != TokenKind::identifier) return false;
+    const std::string& w = t.text;
+    auto list_items = [&] {
+        for (;;) {
+            const Token& n = peek();
+            const Value* v = n.kind == TokenKind::identifier ? lookup(n.text) : nullptr;
+            if (!starts_list_item(n, starts_expression(n), v)) return;
+            const bool texture = n.is_identifier("texture") || (v && std::holds_alternative<Texture>(v->data));
+            if (texture && !st.finish) {
+                Texture tx;
+                if (n.is_identifier("texture")) {
+                    tx = parse_texture(next(), default_texture_);
+                } else {
+                    tx = std::get<Texture>(v->data);
+                    next();
+                }
+                st.listed.push_back(tx.pigment.color);
+                st.finish = tx.finish;
+            } else {
+                st.listed.push_back(parse_list_color("a colour of `" + st.pattern.text + "`"));
+            }
+            optional_comma();
+        }
+    };
+    if (one_of(w, listed_patterns)) {
+        st.pattern = next();
+        list_items();
+    } else if (w == "object") {
+        st.pattern = next();
+        const Nest nest(*this, t.location);
+        open_block(t);
+        const Token o = next();
+        const Value* v = o.kind == TokenKind::identifier ? lookup(o.text) : nullptr;
+        if (v && std::holds_alternative<Object>(v->data)) {
+        } else if (o.kind == TokenKind::identifier && is_object_keyword(o.text)) {
+            parse_object(o);
+        } else {
+            fail_expected("an object in the `object` pattern", o);
+        }
+        list_items();
+        close_block(t, "the pattern's two colours");
+    } else if (one_of(w, mapped_patterns) || w == "average") {
+        st.pattern = next();
+        if (one_of(w, {"function", "image_pattern"})) {
+            const Nest nest(*this, t.location);
+            skip_block(t);
+        } else if (w == "pigment_pattern") {
+            parse_pigment(t, Pigment{});
+        } else if (w == "density_file") {
+            const Token type = next();
+            if (!type.is_identifier("df3")) fail_expected("`df3` after `density_file`", type);
+            const Token file = next();
+            if (file.kind != TokenKind::string) fail_expected("a file name in double quotes after `df3`", file);
+        } else if (w == "slope" && peek().is_symbol("{")) {
+            const Nest nest(*this, t.location);
+            skip_block(t);
+        } else if (starts_expression(peek())) {  // gradient V, spiral1 N, julia V, N, slope V, F, F, ...
+            parse_expression_for("the value of `" + w + "`");
+            while (accept_symbol(",")) parse_expression_for("the value of `" + w + "`");
+        }
+    } else if (w == "image_map") {
+        st.pattern = next();
+        const Nest nest(*this, t.location);
+        skip_block(t);
+    } else if (one_of(w, blend_map_keywords)) {
+        st.map = parse_blend_map(next());
+    } else if (one_of(w, valued_modifiers)) {
+        next();
+        const Numeric n = parse_expression_for("the value of `" + w + "`");
+        if (w == "mortar") st.mortar = n.at(0);
+        if (w == "brick_size") st.brick_size = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
+    } else if ((w == "interior" || w == "exterior") && one_of(st.pattern.text, {"mandel", "julia", "magnet"})) {
+        next();  // a fractal's colouring inside and outside the set: TYPE, FACTOR
+        parse_float("the type of `" + w + "`");
+        optional_comma();
+        parse_float("the factor of `" + w + "`");
+    } else if (w == "poly_wave") {
+        next();
+        if (starts_expression(peek())) parse_float("the exponent of `poly_wave`");
+    } else if (one_of(w, bare_modifiers)) {
+        next();
+    } else if (w == "warp") {
+        const Nest nest(*this, t.location);
+        skip_block(next());
+    } else {
+        return false;
+    }
+    return true;
+}
+
+// BLEND_MAP: KEYWORD { [MAP_IDENT] {[ FLOAT [,] ENTRY ]} }
+inline BlendMap Parser::parse_blend_map(const Token& kw) {
+    const Nest nest(*this, kw.location);
+    open_block(kw);
+    BlendMap map;
+    map.keyword = kw.text == "colour_map" ? "color_map" : kw.text;
+    if (peek().kind == TokenKind::identifier) {
+        const Token id = peek();
+        const Value* v = lookup(id.text);
+        if (!v) fail(id.location, "undefined identifier `" + id.text + "`");
+        const auto* declared = std::get_if<BlendMap>(&v->data);
+        if (!declared || declared->keyword != map.keyword)
+            fail(id.location, "expected a " + map.keyword + " identifier, found `" + id.text + "` (" +
+                                  type_name(v->data) + ", declared at " + position_in(v->at, id.location) + ")");
+        next();
+        map = *declared;
+    }
+    while (peek().is_symbol("[")) {
+        const Token open = next();
+        parse_blend_entry_body(open, map);
+        expect_symbol("]", "to close the `" + map.keyword + "` entry opened at " + position(open.location));
+    }
+    close_block(kw, "`[` starting an entry");
+    return map;
+}
+
+// ENTRY: FLOAT [,] (COLOR | FLOAT, COLOR COLOR (old colour maps) | PIGMENT_BODY | TEXTURE_BODY | OTHER_BODY)
+inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
+    const Nest nest(*this, open.location);
+    const double v = parse_float("the value of the `" + map.keyword + "` entry");
+    const bool comma = accept_symbol(",");
+    if (map.keyword == "color_map") {
+        if (comma && peek().kind == TokenKind::number) {  // [v1, v2 color C1 color C2], POV-Ray's old form
+            const double v2 = parse_float("the second value of the `color_map` entry");
+            const Color c1 = parse_color("the first colour of the entry");
+            const Color c2 = parse_color("the second colour of the entry");
+            map.entries.push_back({v, c1});
+            map.entries.push_back({v2, c2});
+        } else {
+            map.entries.push_back({v, parse_color("the colour of the `color_map` entry")});
+        }
+    } else if (map.keyword == "pigment_map") {
+        Pigment p = parse_pigment_body(open, Pigment{});
+        map.entries.push_back({v, p.color});
+    } else if (map.keyword == "texture_map") {
+        Texture tex = parse_texture_body(open, default_texture_);
+        map.entries.push_back({v, tex.pigment.color});
+        if (!map.finish) map.finish = tex.finish;
+    } else {  // normal_map, slope_map, density_map: photon uses none of them; balanced up to the `]`
+        int depth = 0;
+        for (;;) {
+            const Token& t = peek();
+            if (t.kind == TokenKind::end_of_file) fail_expected("`]` to close the `" + map.keyword + "` entry", t);
+            if (depth == 0 && t.is_symbol("]")) return;
+            if (t.is_symbol("{") || t.is_symbol("[")) ++depth;
+            if (t.is_symbol("}") || t.is_symbol("]")) --depth;
+            next();
+        }
+    }
+}
+
+/// The colour that stands for the pattern in `st`, and in `how` the words saying how it was found.
+inline Color Parser::pattern_average(const PatternState& st, const Color& fallback, std::string& how) {
+    const std::string& w = st.pattern.text;
+    if (w == "image_map") {
+        how = "mid grey, rgb <0.5, 0.5, 0.5>: photon does not read image maps yet";
+        return {Vector3(0.5), 0, 0};
+    }
+    if (one_of(w, listed_patterns) || w == "object") {
+        std::vector<Color> colors = default_listed_colors(w);
+        for (std::size_t i = 0; i < st.listed.size() && i < colors.size(); ++i) colors[i] = st.listed[i];
+        if (w == "brick") {
+            // Mortar of width `mortar` between bricks of `brick_size`: its share of the volume.
+            const Vector3& s = st.brick_size;
+            double brick = 1;
+            for (int k = 0; k < 3; ++k) brick *= s[k] > 0 ? std::max(0.0, s[k] - st.mortar) / s[k] : 0.0;
+            how = "its mortar and brick colours weighted by volume (" + std::to_string(int(std::lround(100 * (1 - brick)))) +
+                  "% mortar)";
+            return mix(colors[0], colors[1], brick);
+        }
+        Color sum;
+        for (const Color& c : colors) sum.rgb += c.rgb, sum.filter += c.filter, sum.transmit += c.transmit;
+        const double n = double(colors.size());
+        how = "the mean of its " + std::to_string(colors.size()) + " colours";
+        return {sum.rgb / n, sum.filter / n, sum.transmit / n};
+    }
+    if (w == "average") {
+        if (!st.map || st.map->entries.empty()) {
+            how = "the colour before it: `average` needs a pigment_map";
+            return fallback;
+        }
+        Color sum;
+        double total = 0;
+        for (const auto& [weight, c] : st.map->entries)
+            sum.rgb += c.rgb * weight, sum.filter += c.filter * weight, sum.transmit += c.transmit * weight,
+                total += weight;
+        how = "the weighted mean of its " + st.map->keyword + "'s entries";
+        if (total == 0) return fallback;
+        return {sum.rgb / total, sum.filter / total, sum.transmit / total};
+    }
+    if (st.map && !st.map->entries.empty()) {
+        how = "its " + st.map->keyword + "'s average over [0, 1]";
+        return blend_average(st.map->entries);
+    }
+    how = "its default colour map's average over [0, 1]";
+    return blend_average(default_color_map(w));
+}
+
+}  // namespace photon::dsl::detail
