@@ -99,7 +99,7 @@ struct ResolvedCamera {
 /// |right| / (2 tan(angle / 2)); then `look_at` turns direction, right and up towards the
 /// target keeping their lengths, right = sky x direction (sign kept from the handedness of the
 /// given up, direction, right), up = direction x right; then the transformations apply.
-[[nodiscard]] inline ResolvedCamera resolve_camera(const CameraDescription& cam, double aspect) {
+[[nodiscard]] inline ResolvedCamera resolve_camera(const CameraDescription& cam, double aspect, Warnings* warn = nullptr) {
     auto where = [&](const char* item) {
         const auto it = cam.written.find(item);
         return it != cam.written.end() ? it->second : cam.at;
@@ -117,10 +117,19 @@ struct ResolvedCamera {
         if (glm::length(forward) == 0.0) throw Error(where("look_at"), "camera look_at equals its location");
         const Vector3 d = glm::normalize(forward);
         const Vector3 side = glm::cross(cam.sky, d);
-        if (glm::length(side) == 0.0)
-            throw Error(where("look_at"),
-                        "camera sky (default y) is parallel to the viewing direction: give another `sky`");
-        const Vector3 right = glm::normalize(side);
+        // Looking along the sky (straight down, say): POV-Ray still renders; photon takes the
+        // axis least aligned with the view as the sky and says so.
+        Vector3 sky_used = cam.sky;
+        if (glm::length(side) == 0.0) {
+            sky_used = std::abs(d.z) < 0.9 ? Vector3(0, 0, 1) : Vector3(1, 0, 0);
+            if (warn)
+                (*warn)(where("look_at"),
+                        "camera sky (default y) is parallel to the viewing direction: photon uses the sky <" +
+                            format_number(sky_used.x) + ", " + format_number(sky_used.y) + ", " +
+                            format_number(sky_used.z) + ">; give another `sky` to choose",
+                        "approximated camera", "sky");
+        }
+        const Vector3 right = glm::normalize(glm::cross(sky_used, d));
         r.up = glm::normalize(glm::cross(d, right)) * up_len;
         r.direction = d * dir_len;
         r.right = right * (handedness > 0 ? right_len : -right_len);
@@ -165,9 +174,9 @@ struct ResolvedCamera {
 /// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
 /// (1 - filter - transmit); transmission = filter * pigment + transmit; mirror reflectance from
 /// `reflection`; `reflection { 0, 1 fresnel on }` with `conserve_energy` makes Fresnel glass;
-/// phong and phong_size carry over. Finish items photon does not render are reported to `warn`;
-/// a surface reflecting more than it receives is a dsl::Error at its finish (at `object` for a
-/// default texture, which was written nowhere).
+/// phong and phong_size carry over. Finish items photon does not render are reported to `warn`,
+/// as is a surface reflecting more than it receives, which is scaled down to conserve energy
+/// (reported at its finish, or at `object` for a default texture, which was written nowhere).
 template <Scalar S>
 [[nodiscard]] MaterialParams<S> material_params(const Texture& tex, const Interior* interior,
                                                 const GlobalSettings& global, Warnings& warn,
@@ -185,7 +194,7 @@ template <Scalar S>
         throw Error(pigment_at, "pigment filter and transmit must be >= 0 with a sum <= 1, found filter " +
                                     format_number(pc.filter) + " and transmit " + format_number(pc.transmit));
     const double opacity = std::max(0.0, 1.0 - pc.filter - pc.transmit);
-    const Vector3 diffuse = f.diffuse * pc.rgb * opacity;
+    Vector3 diffuse = f.diffuse * pc.rgb * opacity;
     Vector3 transmission = pc.filter * pc.rgb + Vector3(pc.transmit);
     Vector3 specular(0.0);
     bool fresnel = false;
@@ -240,14 +249,21 @@ template <Scalar S>
     for (const char* k : {"irid", "crand"})
         if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon", "approximated finish", k);
 
+    // POV-Ray renders a surface that reflects more than it receives; photon, which conserves
+    // energy, scales its reflectances down (keeping their hue) and says so.
     constexpr const char* channel[] = {"red", "green", "blue"};
-    for (int c = 0; c < 3; ++c) {
-        const double sum = diffuse[c] + specular[c] + transmission[c];
-        if (sum > 1 + 1e-9)
-            throw Error(at, std::string("the surface reflects more light than it receives: diffuse ") +
-                                format_number(diffuse[c]) + " + reflection " + format_number(specular[c]) +
-                                " + transmission " + format_number(transmission[c]) + " = " + format_number(sum) +
-                                " > 1 in the " + channel[c] + " channel");
+    int worst = 0;
+    for (int c = 1; c < 3; ++c)
+        if (diffuse[c] + specular[c] + transmission[c] > diffuse[worst] + specular[worst] + transmission[worst]) worst = c;
+    const double sum = diffuse[worst] + specular[worst] + transmission[worst];
+    if (sum > 1 + 1e-9) {
+        warn(at,
+             std::string("the surface reflects more light than it receives: diffuse ") + format_number(diffuse[worst]) +
+                 " + reflection " + format_number(specular[worst]) + " + transmission " +
+                 format_number(transmission[worst]) + " = " + format_number(sum) + " > 1 in the " + channel[worst] +
+                 " channel; photon scales its reflectances by 1/" + format_number(sum) + " to conserve energy",
+             "approximated finish", "finish");
+        diffuse /= sum, specular /= sum, transmission /= sum;
     }
     MaterialParams<S> p;
     p.diffuse = Rgb<S>(diffuse);
@@ -580,7 +596,7 @@ template <Scalar S>
         cam = *desc.camera;
     else
         warn(desc.at, "no camera: using POV-Ray's default camera at the origin looking along +z");
-    const ResolvedCamera rc = resolve_camera(cam, double(settings.width) / double(settings.height));
+    const ResolvedCamera rc = resolve_camera(cam, double(settings.width) / double(settings.height), &warn);
     std::optional<PinholeCamera<S>> camera;
     try {
         camera.emplace(Vec3<S>(rc.location), Vec3<S>(rc.direction), Vec3<S>(rc.right), Vec3<S>(rc.up));

@@ -27,7 +27,7 @@ class PovWriter {
 public:
     explicit PovWriter(DiagnosticSink sink)
         : mesh_files_([sink](const SourceLocation& at, const std::string& m) {
-              if (sink) sink({Severity::warning, at, m});
+              if (sink) sink({Severity::warning, at, m, {}, {}});
           }) {}
 
     std::string write(const SceneDescription& d) {

@@ -4,6 +4,7 @@
 // #while, #default and the messages. They are run in the token stream (peek), so they may appear
 // anywhere, as in POV-Ray.
 
+#include "degradation.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -191,7 +192,18 @@ inline void Parser::directive_declare(const Token& d, bool local) {
 inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     if (t.kind != TokenKind::identifier) return std::nullopt;
     const std::string& w = t.text;
-    if (w == "texture") return parse_texture(next(), default_texture_);
+    if (w == "texture") {
+        Texture tex = parse_texture(next(), default_texture_);
+        // `#declare T = texture { } texture { }`: POV-Ray's layered texture; as on an object,
+        // photon keeps the first (bottom) layer.
+        while (peek().is_identifier("texture")) {
+            const Token layer = next();
+            parse_texture(layer, default_texture_);
+            degrade(layer.location, degraded::approximated_texture, "texture",
+                    "layered `texture`: photon uses the first (bottom) texture and ignores this layer on top of it");
+        }
+        return tex;
+    }
     if (w == "pigment") return parse_pigment(next(), Pigment{});
     if (w == "finish") return parse_finish(next(), Finish{});
     if (w == "interior") return parse_interior(next(), Interior{});

@@ -25,8 +25,7 @@ inline void Parser::directive_fopen(const Token& d) {
     const Token id = next();
     if (id.kind != TokenKind::identifier || is_reserved(id.text))
         fail_expected("an identifier for the file after `#fopen`", id);
-    const Token name = next();
-    if (name.kind != TokenKind::string) fail_expected("a file name in double quotes after `#fopen " + id.text + "`", name);
+    const Token name = parse_string_token("a file name (a string) after `#fopen " + id.text + "`");
     const Token mode = next();
     if (!mode.is_identifier("read") && !mode.is_identifier("write") && !mode.is_identifier("append"))
         fail_expected("`read`, `write` or `append` after the file name", mode);
@@ -89,16 +88,10 @@ inline void Parser::directive_write(const Token& d) {
         if (t.kind == TokenKind::identifier &&
             one_of(t.text, {"uint8", "sint8", "uint16be", "uint16le", "sint16be", "sint16le", "sint32be", "sint32le"}))
             fail(t.location, "binary `#write` (`" + t.text + "`) is not supported by photon: write text");
-        if (t.kind == TokenKind::string) {
-            out += next().text;
+        if (starts_string(t)) {
+            out += parse_string_expression("a string to #write");
             continue;
         }
-        if (t.kind == TokenKind::identifier)
-            if (const Value* v = lookup(t.text); v && std::holds_alternative<std::string>(v->data)) {
-                next();
-                out += std::get<std::string>(v->data);
-                continue;
-            }
         const Numeric n = parse_expression_for("a string, number or vector to #write");
         if (n.dim == 0) {
             out += pov_g(n.c[0]);

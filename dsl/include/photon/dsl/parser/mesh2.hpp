@@ -102,7 +102,7 @@ inline MeshShape Parser::parse_mesh2(const Token& kw, Object& obj) {
     if (!faces) fail_expected("`face_indices` in `mesh2`", peek());
     obj.primitives = tris->size();
     if (tris->empty()) fail(kw.location, "the `mesh2` has no faces");
-    return MeshShape{std::move(tris)};
+    return MeshShape{std::move(tris), {}};
 }
 
 }  // namespace photon::dsl::detail

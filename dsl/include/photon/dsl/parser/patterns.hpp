@@ -270,7 +270,8 @@ inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
     const double v = parse_float("the value of the `" + map.keyword + "` entry");
     const bool comma = accept_symbol(",");
     if (map.keyword == "color_map") {
-        if (comma && peek().kind == TokenKind::number) {  // [v1, v2 color C1 color C2], POV-Ray's old form
+        (void)comma;
+        if (peek().kind == TokenKind::number) {  // [v1[,] v2 color C1 color C2], POV-Ray's old form
             const double v2 = parse_float("the second value of the `color_map` entry");
             const Color c1 = parse_color("the first colour of the entry");
             const Color c2 = parse_color("the second colour of the entry");
