@@ -196,7 +196,14 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
         Texture tex = parse_texture(next(), default_texture_);
         // `#declare T = texture { } texture { }`: POV-Ray's layered texture; as on an object,
         // photon keeps the first (bottom) layer.
-        while (peek().is_identifier("texture")) {
+        // Looking for a layer must not run the next directive (it may use this declaration).
+        auto another_layer = [&] {
+            suppress_.push_back(files_.size());
+            const bool more = peek().is_identifier("texture");
+            suppress_.pop_back();
+            return more;
+        };
+        while (another_layer()) {
             const Token layer = next();
             parse_texture(layer, default_texture_);
             degrade(layer.location, degraded::approximated_texture, "texture",

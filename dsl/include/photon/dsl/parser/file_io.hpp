@@ -83,7 +83,10 @@ inline void Parser::directive_write(const Token& d) {
     OpenFile& f = open_file(id, "write");
     if (!f.writing) fail(id.location, "cannot #write to \"" + f.name + "\": it is open for reading");
     std::string out;
-    while (accept_symbol(",")) {
+    // POV-Ray's commas here are optional (Parse_Comma): `#write (F Header)` is read too.
+    for (;;) {
+        accept_symbol(",");
+        if (peek().is_symbol(")")) break;
         const Token& t = peek();
         if (t.kind == TokenKind::identifier &&
             one_of(t.text, {"uint8", "sint8", "uint16be", "uint16le", "sint16be", "sint16le", "sint32be", "sint32le"}))
