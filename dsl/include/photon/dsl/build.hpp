@@ -532,9 +532,13 @@ private:
                               ") becomes a cone of half-angle " + format_number(std::round(half * 100) / 100) +
                               " degrees carrying the same power. Write `radius A falloff A tightness 0` for an exact "
                               "cone");
-                if (!(half > 0))
-                    throw Error(item("radius"), "this spotlight emits no light: its `radius`, `falloff` and `tightness` "
-                                                "leave no direction lit");
+                if (!(half > 0)) {  // POV-Ray renders it, dark: photon leaves it out
+                    warn_(item("radius"),
+                          "this spotlight emits no light (its `radius`, `falloff` and `tightness` leave no direction "
+                          "lit): photon leaves it out",
+                          "approximated light", "spotlight");
+                    return;
+                }
                 cone.emplace(Vec3<S>(axis), S(half));
             }
             const S solid_angle = cone ? cone->solid_angle() : S(4) * pi<S>;

@@ -18,7 +18,15 @@ inline Array Parser::parse_array(const Token& kw) {
         a.mixed = true;
     }
     std::uint64_t count = 1;
-    while (peek().is_symbol("[")) {
+    // Looking past the last `]` must not run the next directive: `#declare A = array[2]` then
+    // `#declare A[0] = 1` on the next line needs A declared first.
+    auto peek_here = [&]() -> const Token& {
+        suppress_.push_back(files_.size());
+        const Token& t = peek();
+        suppress_.pop_back();
+        return t;
+    };
+    while (peek_here().is_symbol("[")) {
         next();
         const double limit = double(options_.max_array_elements);
         const auto n = std::size_t(parse_integer("the size of an array", 1, limit));
@@ -30,7 +38,7 @@ inline Array Parser::parse_array(const Token& kw) {
         a.sizes.push_back(n);
     }
     if (a.sizes.empty()) fail_expected("`[` and the size of the array after `array`", peek());
-    if (peek().is_symbol("{")) {
+    if (peek_here().is_symbol("{")) {
         std::size_t next_index = 0;
         parse_array_initialiser(a, 0, next_index, kw);
     }
@@ -42,8 +50,11 @@ inline void Parser::parse_array_initialiser(Array& a, std::size_t dim, std::size
     const Nest nest(*this, peek().location);
     const Token open = expect_symbol("{", "to open the elements of the array");
     for (std::size_t i = 0; i < a.sizes[dim]; ++i) {
-        if (i > 0) expect_symbol(",", "between the elements of the array (it has " + std::to_string(a.sizes[dim]) +
-                                          " in dimension " + std::to_string(dim + 1) + ")");
+        // POV-Ray's commas between elements are optional (allnormals.pov: `"Average""Boxed"`).
+        if (i > 0 && !accept_symbol(",") && (peek().is_symbol("}") || peek().kind == TokenKind::end_of_file))
+            fail_expected("`,` between the elements of the array (it has " + std::to_string(a.sizes[dim]) +
+                              " in dimension " + std::to_string(dim + 1) + ")",
+                          peek());
         if (dim + 1 < a.sizes.size()) {
             parse_array_initialiser(a, dim + 1, next_index, kw);
         } else {

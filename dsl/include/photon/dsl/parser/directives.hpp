@@ -448,10 +448,14 @@ inline void Parser::directive_default(const Token& d) {
             default_texture_.pigment = parse_pigment(next(), default_texture_.pigment);
         else if (t.is_identifier("finish"))
             default_texture_.finish = parse_finish(next(), default_texture_.finish);
-        else
+        else if (t.is_identifier("normal")) {
+            const Token n = next();
+            skip_block(n);
+            degrade(n.location, degraded::ignored_effect, "normal", "`normal` is ignored: photon does not perturb normals");
+        } else
             break;
     }
-    close_block(d, "`texture`, `pigment` or `finish`", {"texture", "pigment", "finish"});
+    close_block(d, "`texture`, `pigment`, `finish` or `normal`", {"texture", "pigment", "finish", "normal"});
 }
 
 }  // namespace photon::dsl::detail

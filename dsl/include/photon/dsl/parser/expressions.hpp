@@ -50,6 +50,18 @@ inline Numeric Parser::parse_and() {
 }
 
 inline Numeric Parser::parse_relation() {
+    // STRING_RELATION: STRING (< | <= | = | != | >= | >) STRING, compared as strcmp (POV-Ray's
+    // Parse_Rel_String_Term): `#if (Name != "")`.
+    if (starts_string(peek())) {
+        const std::string a = parse_string_expression("a string");
+        const Token op = next();
+        if (!(op.kind == TokenKind::symbol && one_of(op.text, {"<", "<=", "=", "!=", ">=", ">"})))
+            fail_expected("a comparison (`=`, `!=`, `<`, ...) after a string", op);
+        const int c = a.compare(parse_string_expression("a string to compare with"));
+        const bool r = op.text == "<" ? c < 0 : op.text == "<=" ? c <= 0 : op.text == "=" ? c == 0
+                     : op.text == "!=" ? c != 0 : op.text == ">=" ? c >= 0 : c > 0;
+        return Numeric::scalar(r);
+    }
     Numeric a = parse_sum();
     while (!in_vector_) {
         const Token& t = peek();

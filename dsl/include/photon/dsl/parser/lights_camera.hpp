@@ -189,6 +189,13 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
                     "direction, right and up: photon has only the perspective camera yet");
             continue;
         }
+        if (w == "normal") {  // POV-Ray's camera ray perturbation
+            const Token n = next();
+            skip_block(n);
+            degrade(n.location, degraded::ignored_effect, "normal",
+                    "the camera's `normal` is ignored: photon does not perturb camera rays");
+            continue;
+        }
         if (!one_of(w, camera_keywords)) break;
         next();
         cam.written[w] = t.location;

@@ -249,9 +249,12 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
             const Nest nest(*this, t.location);
             open_block(t);
             const Texture a = parse_texture_body(t, default_texture_);
+            // Each tile may be a layered texture: photon keeps its first layer, as elsewhere.
+            while (peek().is_identifier("texture")) parse_texture(next(), default_texture_);
             const Token tile2 = next();
             if (!tile2.is_identifier("tile2")) fail_expected("`tile2` and the second texture in `tiles`", tile2);
             const Texture b = parse_texture_body(tile2, default_texture_);
+            while (peek().is_identifier("texture")) parse_texture(next(), default_texture_);
             close_block(t, "the second texture");
             st.listed = {a.pigment.color, b.pigment.color};
             st.finish = a.finish;

@@ -212,7 +212,8 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         } else if (w == "no_shadow") {
             next();
             obj.no_shadow = true;
-        } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "inverse"})) {
+        } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "inverse",
+                              "uv_mapping"})) {
             next();
             obj.ignored[w] = t.location;
             degrade(t.location, degraded::ignored_effect, w, "`" + w + "` is ignored by photon");

@@ -267,7 +267,10 @@ inline BlendMap Parser::parse_blend_map(const Token& kw) {
 // ENTRY: FLOAT [,] (COLOR | FLOAT, COLOR COLOR (old colour maps) | PIGMENT_BODY | TEXTURE_BODY | OTHER_BODY)
 inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
     const Nest nest(*this, open.location);
-    const double v = parse_float("the value of the `" + map.keyword + "` entry");
+    // An `average` pigment_map's weight may be left out (POV-Ray's teak_37.pov writes
+    // `[function { ... } color_map { ... }]`): it weighs 1 then.
+    const bool weightless = map.keyword == "pigment_map" && !starts_expression(peek());
+    const double v = weightless ? 1.0 : parse_float("the value of the `" + map.keyword + "` entry");
     const bool comma = accept_symbol(",");
     if (map.keyword == "color_map") {
         (void)comma;

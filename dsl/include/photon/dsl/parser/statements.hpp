@@ -37,6 +37,11 @@ inline void Parser::parse_statements() {
                 scene_.camera = parse_camera(next());
                 continue;
             }
+            // DEFAULT: default { ... }, POV-Ray's old spelling of #default.
+            if (w == "default") {
+                directive_default(next());
+                continue;
+            }
             if (w == "global_settings") {
                 parse_global_settings(next());
                 continue;
