@@ -160,8 +160,10 @@ def write_report(a, examples, scenes, results):
     L.append("# POV-Ray's sample scenes in photon\n")
     L.append("Written by `scripts/pov-corpus.py` (do not edit by hand): every `.pov` file of Debian's "
              "`povray-examples` (POV-Ray 3.7, `%s`) read by `photon check` from its own directory, with "
-             "the standard includes of `povray-includes`; each scene that passes rendered at 160x120 "
-             "(`photon render`, default mode, one thread, %g s limit).\n" % (examples, a.render_seconds))
+             "the standard includes of `povray-includes`; %s\n" % (examples,
+             "no render in this run (`--no-render`)." if a.no_render else
+             "each scene that passes rendered at 160x120 (`photon render`, default mode, one thread, %g s limit)."
+             % a.render_seconds))
     L.append("| | scenes | share |\n|---|---:|---:|")
     row = lambda name, k: L.append("| %s | %d | %.0f%% |" % (name, k, 100.0 * k / n))
     row("sample scenes", n)
