@@ -239,3 +239,7 @@ template <class SceneT>
 }
 
 }  // namespace photon
+
+// extern declarations of render() and its passes for DefaultScene<float|double> under
+// PHOTON_SEPARATE_COMPILATION (photon::compiled).
+#include "render_instantiations.hpp"

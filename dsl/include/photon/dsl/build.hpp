@@ -618,3 +618,12 @@ template <Scalar S>
 }
 
 }  // namespace photon::dsl
+
+// With PHOTON_DSL_SEPARATE_COMPILATION (photon::dsl_compiled), build() for the two scalar types is
+// compiled once, in dsl/src/build.cpp.
+#if defined(PHOTON_DSL_SEPARATE_COMPILATION) && PHOTON_DSL_SEPARATE_COMPILATION
+namespace photon::dsl {
+extern template BuiltScene<float> build<float>(const SceneDescription&, const BuildOptions&);
+extern template BuiltScene<double> build<double>(const SceneDescription&, const BuildOptions&);
+}  // namespace photon::dsl
+#endif

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The render functions for the scene language's scene types, DefaultScene<float> and
+// DefaultScene<double>, listed once. Header-only use instantiates them in every translation unit
+// that renders (15 to 20 CPU-seconds each at -O3). A program built with PHOTON_SEPARATE_COMPILATION
+// (CMake target photon::compiled) sees them as `extern template` and links the one compiled unit
+// that instantiates them (src/render_instantiations.cpp); other scene types are unaffected.
+
+#include "../scene/scene.hpp"
+#include "render.hpp"
+
+/// PHOTON_RENDER_INSTANTIATIONS(EXTERN, S): the explicit instantiations for DefaultScene<S>:
+/// declarations with EXTERN = extern, definitions with EXTERN empty.
+#define PHOTON_RENDER_INSTANTIATIONS(EXTERN, S)                                                                      \
+    EXTERN template RenderResult render<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,            \
+                                                         const RenderSettings&);                                     \
+    EXTERN template PhotonMaps build_photon_maps<DefaultScene<S>>(const DefaultScene<S>&, const RenderSettings&,    \
+                                                                  RenderStats&);                                     \
+    EXTERN template Film render_image<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,              \
+                                                       const PhotonMaps&, const RenderSettings&, RenderStats&);      \
+    EXTERN template IrradianceCache build_irradiance_cache<DefaultScene<S>>(                                         \
+        const DefaultScene<S>&, const PinholeCamera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
+    EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,               \
+                                                      const RenderSettings&, RenderStats&, const SppmPassCallback&);
+
+#if defined(PHOTON_SEPARATE_COMPILATION) && PHOTON_SEPARATE_COMPILATION
+namespace photon {
+PHOTON_RENDER_INSTANTIATIONS(extern, float)
+PHOTON_RENDER_INSTANTIATIONS(extern, double)
+}  // namespace photon
+#endif
