@@ -11,6 +11,8 @@
 
 #include "cornell_box.hpp"
 
+#include <photon/film/image_io.hpp>
+
 int main(int argc, char** argv) try {
     photon::RenderSettings settings;  // 800 x 600, ray depth 4, photon depth 10
     std::string out_dir = ".";

@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include <photon/dsl/dsl.hpp>
+#include <photon/film/image_io.hpp>
 
 #include "region_statistics.hpp"
 

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <photon/dsl/dsl.hpp>
+#include <photon/film/image_io.hpp>
 
 #include "setting_options.hpp"
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // photon: global illumination by photon mapping. This umbrella header includes every public
-// header but io/obj_mesh.hpp, which needs tinyobjloader (CMake target photon::obj); each can also
-// be included on its own.
+// header but two, which bring in heavy third-party headers: io/obj_mesh.hpp (tinyobjloader; CMake
+// target photon::obj) and film/image_io.hpp (OpenImageIO, half of this header's compile time):
+// include that one where images are written or read. Each header can also be included on its own.
 
 #include "config.hpp"
 #include "version.hpp"
@@ -61,7 +62,6 @@
 #include "integrator/shading_context.hpp"
 
 #include "film/film.hpp"
-#include "film/image_io.hpp"
 #include "film/tone_map.hpp"
 
 #include "memory/huge_page_allocator.hpp"

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <photon/film/image_io.hpp>
 #include <photon/photon.hpp>
 
 #include <cmath>
