@@ -79,7 +79,7 @@ echo "|---|---:|---:|"
 measure "umbrella header alone" "$root/examples/cornell.cpp" "$tmp/umbrella.cpp"
 measure "examples/cornell.cpp" "$root/examples/cornell.cpp"
 measure "CLI (dsl/cli/main.cpp)" "$root/dsl/cli/main.cpp"
-for unit in "$root"/dsl/src/*.cpp; do
+for unit in "$root"/src/*.cpp "$root"/dsl/src/*.cpp; do
   [ -f "$unit" ] && measure "compiled unit ${unit#"$root"/}" "$unit"
 done
 measure "one test file (tests/dsl/scenes_test.cpp)" "$root/tests/dsl/scenes_test.cpp"
