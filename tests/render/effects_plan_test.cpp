@@ -80,7 +80,7 @@ TEST_CASE("effects are forced by text: EFFECT=on|off|auto, read back as written"
     CHECK(parse_effect_switches(to_string(s)) == s);
     CHECK(parse_effect_switches("") == EffectSwitches{});
     CHECK(parse_effect_switches("lights=on,lights=auto").lights == EffectSwitch::automatic);
-    CHECK_THROWS_WITH(parse_effect_switches("caustic=off"), Catch::Contains("caustics, indirect or lights"));
+    CHECK_THROWS_WITH(parse_effect_switches("caustic=off"), Catch::Contains("caustics, indirect, lights"));
     CHECK_THROWS_WITH(parse_effect_switches("indirect=maybe"), Catch::Contains("on, off or auto"));
     CHECK_THROWS_WITH(parse_effect_switches("lights=off"), Catch::Contains("on or auto"));
     CHECK(effect_switches_problem("caustics=on,"));  // an empty item names nothing

@@ -44,7 +44,11 @@ inline constexpr std::array<EffectName, 3> effect_names{{{"caustics", &EffectSwi
 /// indirect, lights; lights only on or auto), as the end of a sentence, or nothing when it is
 /// one. The empty text leaves everything to the plan.
 [[nodiscard]] inline std::optional<std::string> effect_switches_problem(std::string_view text) {
-    if (!text.empty() && text.back() == ',') return "must not end with a comma, found `" + std::string(text) + "`";
+    const auto not_a_list = [&] {
+        return "must be EFFECT=on|off|auto items separated by commas, EFFECT one of caustics, indirect, lights; found `" +
+               std::string(text) + "`";
+    };
+    if (!text.empty() && text.back() == ',') return not_a_list();
     std::size_t at = 0;
     while (at < text.size()) {
         const std::size_t comma = std::min(text.find(',', at), text.size());
@@ -54,10 +58,10 @@ inline constexpr std::array<EffectName, 3> effect_names{{{"caustics", &EffectSwi
         const detail::EffectName* effect = nullptr;
         for (const auto& e : detail::effect_names)
             if (e.name == name) effect = &e;
-        if (!effect) return "must name caustics, indirect or lights, found `" + std::string(item) + "`";
+        if (!effect) return not_a_list();
         if (value != "on" && value != "auto" && (value != "off" || !effect->can_be_off))
-            return std::string("must set ") + std::string(name) + (effect->can_be_off ? " to on, off or auto" : " to on or auto") +
-                   ", found `" + std::string(item) + "`";
+            return std::string(effect->can_be_off ? "must be on, off or auto for " : "must be on or auto for ") +
+                   std::string(name) + ", found `" + std::string(item) + "`";
         at = comma + 1;
     }
     return std::nullopt;

@@ -51,6 +51,7 @@ struct EffectsPlan {
     PathClassPlan caustics;       ///< L S+ D E
     PathClassPlan specular_view;  ///< L (S|D)* S+ E: seen in mirrors and through glass
     std::vector<std::uint32_t> caustic_objects;  ///< the mirror and glass objects that carry caustics
+    std::vector<std::string> caustic_object_names;  ///< "object 5 (sphere)", one per caustic_objects entry
 
     std::vector<LightPlan> lights;
     bool global_pass = false, caustic_pass = false;
@@ -203,6 +204,7 @@ template <class SceneT>
                            : diffuse.empty()  ? "no diffuse surface for caustics to land on"
                                               : "";
     if (plan.caustics.present) plan.caustic_objects = specular;
+    for (std::uint32_t i : plan.caustic_objects) plan.caustic_object_names.push_back(object_name(scene, i));
 
     // Indirect light needs light to bounce off a diffuse surface onto a diffuse surface. With
     // nothing specular to redirect it, one flat surface cannot light itself, nor can one convex
@@ -284,7 +286,10 @@ template <class SceneT>
         plan.passes_skipped.push_back("global photons");
     }
     if (gathering && !plan.final_gather) {
-        drop("final gather", indirect_why, force.indirect == EffectSwitch::off);
+        std::string what = "final gather";
+        if (settings.irradiance_stride > 0) what += ", precomputed irradiance";
+        if (settings.irradiance_cache_error > 0.0f) what += ", irradiance cache";
+        drop(what, indirect_why, force.indirect == EffectSwitch::off);
         plan.passes_skipped.push_back("final gather");
         if (settings.irradiance_stride > 0) plan.passes_skipped.push_back("precomputed irradiance");
         if (settings.irradiance_cache_error > 0.0f) plan.passes_skipped.push_back("irradiance cache");

@@ -22,12 +22,13 @@ namespace photon {
         return p.present ? (yes.empty() ? std::string("yes") : "yes, " + yes) : "no: " + p.reason;
     };
     std::string carriers;
-    for (std::size_t i = 0; i < plan.caustic_objects.size(); ++i) {
-        if (i == 6) {
-            carriers += ", and " + std::to_string(plan.caustic_objects.size() - i) + " more";
+    const auto& names = plan.caustic_object_names;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i == 4) {
+            carriers += " and " + std::to_string(names.size() - i) + " more";
             break;
         }
-        carriers += (i ? ", " : "from objects ") + std::to_string(plan.caustic_objects[i]);
+        carriers += (i ? ", " : "from ") + names[i];
     }
     line("L D E", "direct light: " + verdict(plan.direct, ""));
     line("L D D+ E", "indirect light: " + verdict(plan.indirect, ""));
@@ -43,7 +44,7 @@ namespace photon {
                 (plan.global_for_unaimed_caustics_only ? " (for unaimed caustics only)" : "");
     if (plan.caustic_pass) maps += (maps.empty() ? "" : ", ") + ("caustic " + std::to_string(plan.caustic_photons) + " photons");
     line("maps", maps.empty() ? "none" : maps);
-    if (plan.lights.size() > 1) {
+    if (plan.lights.size() > 1 && (plan.global_pass || plan.caustic_pass)) {
         std::string shares;
         for (std::size_t l = 0; l < plan.lights.size(); ++l) {
             if (l == 8) {
