@@ -262,6 +262,47 @@ TEST_CASE("a light in a closed box elsewhere emits nothing and changes nothing",
     }
 }
 
+TEST_CASE("a glass ball behind a wall behind the camera gets no caustic photons and changes nothing", "[plan]") {
+    // A floor, and a wall at z = -1 behind the camera, which looks along +z; the light is in front.
+    const auto walled = [](Vec3<float> ball) {
+        return floor_scene([ball](auto& sc, auto white) {
+            sc.add(Plane<float>({0, 0, 1}, -1.0f), white);
+            if (ball.z != 0) sc.add(Sphere<float>(ball, 0.5f), sc.add_material(Material<float>::glass(1.5f)));
+        });
+    };
+    const auto cam = camera_at({0, 1, 0}, {0, 0.5f, 3});
+    const RenderSettings s = small();
+    const auto behind = walled({0, 0.6f, -2});
+    const EffectsPlan p = plan_effects(behind, cam, s);
+    CHECK_FALSE(p.caustics.present);
+    CHECK_FALSE(p.caustic_pass);
+    CHECK(mentions(p.dropped, "caustic photons at object 2 (sphere): behind object 1 (plane)"));
+    CHECK(plan_effects(walled({0, 0.6f, 2}), cam, s).caustic_pass);  // in front of the wall: kept
+    const RenderResult planned = render(behind, cam, s);
+    CHECK(planned.stats.caustic.emitted == 0);
+    const RenderResult no_ball = render(walled({0, 0, 0}), cam, s);
+    CHECK(planned.stats.global.stored == no_ball.stats.global.stored);  // no photon reaches the ball
+    // Not bit-identical: the ball enlarges the scene's bounds, which scale the ray offsets.
+    CHECK(planned.film.mean().y == Approx(no_ball.film.mean().y).epsilon(0.005));
+    RenderSettings on = s;
+    on.effects.caustics = EffectSwitch::on;
+    const RenderResult forced = render(behind, cam, on);
+    CHECK(forced.stats.caustic.emitted == s.caustic_photons);
+    CHECK(forced.stats.caustic.stored == 0);  // every one of them ends on the wall's back
+    CHECK(identical(forced.film, planned.film));
+
+    SECTION("a light behind the wall emits nothing") {
+        const auto lamp = floor_scene([](auto& sc, auto white) {
+            sc.add(Plane<float>({0, 0, 1}, -1.0f), white);
+            sc.add_light(PointLight<float>{.position = {0, 2, -3}, .power = Rgb<float>(100.0f)});
+        });
+        const EffectsPlan lp = plan_effects(lamp, cam, s);
+        CHECK(lp.lights[0].emits);
+        CHECK_FALSE(lp.lights[1].emits);
+        CHECK_THAT(lp.lights[1].reason, Catch::Contains("behind object 1 (plane)"));
+    }
+}
+
 TEST_CASE("a forced-on effect equals the unplanned render; forced off, it is gone", "[plan]") {
     const auto scene = diffuse_room(true);
     const RenderSettings s = small();

@@ -122,7 +122,7 @@ template <class SceneT>
                                .cancel = settings.cancel};
     pass.light_emits = plan.light_emits();
     const bool caustics = plan.caustics.present && settings.effects.caustics != EffectSwitch::off;
-    const auto aim = caustic_aim(scene);
+    const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
     const bool caustic_pass = plan.caustic_pass;
     std::vector<Photon> caustic_photons;
     if (caustic_pass) {

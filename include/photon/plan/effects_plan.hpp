@@ -52,6 +52,9 @@ struct EffectsPlan {
     PathClassPlan specular_view;  ///< L (S|D)* S+ E: seen in mirrors and through glass
     std::vector<std::uint32_t> caustic_objects;  ///< the mirror and glass objects that carry caustics
     std::vector<std::string> caustic_object_names;  ///< "object 5 (sphere)", one per caustic_objects entry
+    /// Per object: a mirror or glass object whose caustics the camera cannot see (walled off),
+    /// at which the caustic pass does not aim (caustic_aim's `skip`).
+    std::vector<bool> hidden_caustic_objects;
 
     std::vector<LightPlan> lights;
     bool global_pass = false, caustic_pass = false;
@@ -124,6 +127,37 @@ template <class SceneT>
     return true;  // unbounded and not a plane: assume it can be reached
 }
 
+/// Why nothing the camera at `eye` sees can receive light from the ball (centre, radius), or
+/// nothing when that is not proved: the ball is inside a closed opaque convex solid the camera is
+/// outside of, or an opaque infinite plane has the ball strictly on one side and the camera on the
+/// other. Opaque: no transmission, and casting shadows (so that shadow rays stop there too).
+/// Object `self` (the ball's own object, if any) is not a wall.
+template <class SceneT>
+[[nodiscard]] std::optional<std::string> walled_off(const SceneT& scene, const Vec3<typename SceneT::scalar_type>& eye,
+                                                    const Vec3<typename SceneT::scalar_type>& center,
+                                                    typename SceneT::scalar_type radius, std::int64_t self = -1) {
+    using S = typename SceneT::scalar_type;
+    const auto objects = scene.objects();
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+        const auto& o = objects[i];
+        if (std::int64_t(i) == self || !is_black(scene.material_of(i).params().transmission) || !o.options.casts_shadow)
+            continue;
+        const bool closed = std::visit([](const auto& s) { return plan::is_convex_solid(s); }, o.shape);
+        if (closed && !scene.object_bounds(i).contains(eye) &&
+            std::visit([&](const auto& s) { return plan::contains_ball(s, center, radius); }, o.shape))
+            return "inside " + object_name(scene, i) + ", a closed opaque solid the camera is outside of";
+        if (const auto* plane = std::get_if<Plane<S>>(&o.shape)) {
+            const S margin = S(1e-4) * std::max({max_component(glm::abs(eye)), max_component(glm::abs(center)), radius,
+                                                 std::abs(plane->offset())});
+            const S eye_side = glm::dot(plane->normal(), eye) - plane->offset();
+            const S ball_side = glm::dot(plane->normal(), center) - plane->offset();
+            if (std::abs(eye_side) > margin && std::abs(ball_side) > radius + margin && (eye_side > 0) != (ball_side > 0))
+                return "behind " + object_name(scene, i) + ", an opaque plane the camera is on the other side of";
+        }
+    }
+    return std::nullopt;
+}
+
 }  // namespace plan_detail
 
 /// The plan for `scene` seen by a camera at `eye` (nothing: unknown, the inferences that need
@@ -147,25 +181,11 @@ template <class SceneT>
             lp.emits = false;
             lp.reason = name + ": no power";
         } else if (force.lights != EffectSwitch::on) {
-            if (eye) {
-                for (std::uint32_t i = 0; i < objects.size() && lp.emits; ++i) {
-                    const auto& o = objects[i];
-                    const Material<S>& m = scene.material_of(i);
-                    // Closed, convex, opaque to photons and to shadow rays, holding the light
-                    // but not the camera: no light leaves it and the camera cannot look in.
-                    if (!is_black(m.params().transmission) || !o.options.casts_shadow) continue;
-                    const bool closed = std::visit([](const auto& s) { return plan::is_convex_solid(s); }, o.shape);
-                    if (!closed || scene.object_bounds(i).contains(*eye)) continue;
-                    const bool holds = std::visit(
-                        [&](const auto& s) { return plan::contains_ball(s, light_center(light), light_radius(light)); },
-                        o.shape);
-                    if (holds) {
-                        lp.emits = false;
-                        lp.reason = name + ": inside " + object_name(scene, i) +
-                                    ", a closed opaque solid the camera is outside of";
-                    }
+            if (eye)
+                if (const auto why = plan_detail::walled_off(scene, *eye, light_center(light), light_radius(light))) {
+                    lp.emits = false;
+                    lp.reason = name + ": " + *why;
                 }
-            }
             if (lp.emits && light_cone(light)) {
                 bool reaches = false;
                 for (std::uint32_t i = 0; i < objects.size() && !reaches; ++i)
@@ -198,12 +218,29 @@ template <class SceneT>
                                 : settings.max_ray_depth > 1 ? ""
                                                              : "max ray depth 1: camera rays end at the first hit";
 
-    plan.caustics.present = lit && !specular.empty() && !diffuse.empty();
-    plan.caustics.reason = !lit              ? no_light
-                           : specular.empty() ? "no mirror or glass surface"
-                           : diffuse.empty()  ? "no diffuse surface for caustics to land on"
-                                              : "";
-    if (plan.caustics.present) plan.caustic_objects = specular;
+    // Caustics of a mirror or glass object walled off from the camera land where it cannot see.
+    plan.hidden_caustic_objects.assign(objects.size(), false);
+    std::vector<std::uint32_t> seen_specular;
+    std::vector<std::string> walled;
+    for (std::uint32_t i : specular) {
+        const BBox<S> b = scene.object_bounds(i);
+        std::optional<std::string> why;
+        if (eye && b.is_finite() && force.caustics != EffectSwitch::on)
+            why = plan_detail::walled_off(scene, *eye, b.center(), S(0.5) * glm::length(b.extent()), i);
+        if (!why) {
+            seen_specular.push_back(i);
+            continue;
+        }
+        plan.hidden_caustic_objects[i] = true;
+        walled.push_back(object_name(scene, i) + ": " + *why);
+    }
+    plan.caustics.present = lit && !seen_specular.empty() && !diffuse.empty();
+    plan.caustics.reason = !lit                   ? no_light
+                           : specular.empty()      ? "no mirror or glass surface"
+                           : diffuse.empty()       ? "no diffuse surface for caustics to land on"
+                           : seen_specular.empty() ? "every mirror and glass object is walled off from the camera"
+                                                   : "";
+    if (plan.caustics.present) plan.caustic_objects = seen_specular;
     for (std::uint32_t i : plan.caustic_objects) plan.caustic_object_names.push_back(object_name(scene, i));
 
     // Indirect light needs light to bounce off a diffuse surface onto a diffuse surface. With
@@ -246,7 +283,7 @@ template <class SceneT>
 
     // Caustic pass, as render() runs it: aimed at the caustic targets, from the lights that emit.
     const std::vector<bool> emits = plan.light_emits();
-    const auto aim = caustic_aim(scene);
+    const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
     const bool any_emits = [&] {
         for (std::size_t l = 0; l < lights.size(); ++l)
             if (emits[l] && max_component(light_power(lights[l])) > S(0)) return true;
@@ -265,7 +302,9 @@ template <class SceneT>
     // glass it cannot aim at, or all of them when it does not run.
     const bool collect = want_caustics && plan.caustics.present;
     bool unaimed = collect && !plan.caustic_pass;
-    for (std::uint32_t i : specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
+    for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
+    if (settings.caustic_photons > 0)
+        for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
 
     const bool gathering = settings.mode == RenderMode::pm && settings.final_gather_rays > 0;
     const bool all_light = settings.mode == RenderMode::pm_direct;  // direct light from the map too
