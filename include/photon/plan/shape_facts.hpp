@@ -69,8 +69,9 @@ template <class Shape, Scalar S> [[nodiscard]] bool inside_by(const Shape& shape
 }  // namespace detail
 
 /// Whether the ball (centre, radius) lies inside the closed convex solid `shape`, with a margin
-/// of 1e-4 of the shape's largest coordinate (the scale rounding errors follow). A transformed solid holds the ball if it holds the
-/// eight corners of the ball's bounding cube (it is convex), tested in its own space.
+/// of 1e-4 of the shape's largest coordinate (the scale rounding errors follow). A transformed
+/// solid holds the ball if it holds the eight corners of the ball's bounding cube (it is convex),
+/// tested in its own space.
 template <class Shape, Scalar S>
 [[nodiscard]] bool contains_ball(const Shape& shape, const Vec3<S>& center, S radius) {
     if constexpr (is_transformed<Shape>::value) {
