@@ -248,6 +248,7 @@ TEST_CASE("a light in a closed box elsewhere emits nothing and changes nothing",
     CHECK(planned.stats.plan.photons_moved > 0);
     CHECK(planned.stats.global.stored == no_light.stats.global.stored);
     CHECK(identical(planned.film, no_light.film));  // the boxed light's photons all went to the other
+    CHECK(planned.stats.rays.shadow == no_light.stats.rays.shadow);  // and it gets no shadow rays
 
     SECTION("forced on, its photons land inside the box, which the camera cannot see") {
         RenderSettings on = s;
@@ -255,6 +256,7 @@ TEST_CASE("a light in a closed box elsewhere emits nothing and changes nothing",
         const RenderResult forced = render(with_light, cam, on);
         CHECK(forced.stats.plan.photons_moved == 0);
         CHECK(forced.stats.global.emitted == s.global_photons);
+        CHECK(forced.stats.rays.shadow > planned.stats.rays.shadow);
         // Far more photons are stored (the box's bright inside), yet the image is the same
         // within the noise of the fewer photons left to the visible light.
         CHECK(forced.stats.global.stored > planned.stats.global.stored);

@@ -166,14 +166,16 @@ template <class SceneT>
 }
 
 /// Pass 2: one radiance estimate per jittered sample, averaged per pixel. Pixel p draws from
-/// random stream p, so the film does not depend on the thread count.
+/// random stream p, so the film does not depend on the thread count. Lights with
+/// `lights_reaching[l] == false` get no shadow rays (EffectsPlan::light_emits; empty: all do).
 template <class SceneT>
 [[nodiscard]] Film render_image(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
-                                const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats) {
+                                const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats,
+                                const std::vector<bool>& lights_reaching = {}) {
     using S = typename SceneT::scalar_type;
     const auto start = std::chrono::steady_clock::now();
     Film film(settings.width, settings.height);
-    const RadianceIntegrator<SceneT> integrator(scene, maps, settings);
+    const RadianceIntegrator<SceneT> integrator(scene, maps, settings, lights_reaching);
     const PathTracer<SceneT> path_tracer(scene, settings);
     const bool reference = settings.mode == RenderMode::reference;
     const unsigned grid = settings.samples_per_pixel == 1 ? 1u : strata_per_axis(settings.samples_per_pixel);
@@ -249,7 +251,8 @@ template <class SceneT>
         stats.partial = true;
     } else {
         if (plan.irradiance_cache) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, obeyed, stats);
-        result.film = render_image(scene, camera, maps, obeyed, stats);
+        // A light the plan silenced sends nothing the camera sees: no shadow rays to it either.
+        result.film = render_image(scene, camera, maps, obeyed, stats, plan.planned ? plan.light_emits() : std::vector<bool>{});
     }
     stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
