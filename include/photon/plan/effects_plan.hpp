@@ -7,9 +7,12 @@
 //
 // Conservative: an inference drops work only when it proves that the work cannot change the
 // image (no mirror or glass: no caustics; one flat or convex diffuse surface and nothing
-// specular: light never bounces twice; a light inside a closed opaque solid the camera is
-// outside of, or whose cone meets nothing, or without power: none of its light reaches the
-// image). Anything it cannot prove is kept. RenderSettings::effects forces an effect either way.
+// specular: light never bounces twice; a light walled off from the camera, inside a closed
+// opaque solid the camera is outside of or behind an opaque plane, or whose cone meets nothing,
+// or without power: none of its light reaches the image, so it gets neither photons nor shadow
+// rays; a mirror or glass object walled off the same way: its caustics cannot be seen, so no
+// caustic photon is aimed at it). Anything it cannot prove is kept. RenderSettings::effects
+// forces an effect either way. docs/effects-plan.md lists the rules.
 
 #include <algorithm>
 #include <cmath>
