@@ -9,6 +9,7 @@
 
 #include <photon/dsl/dsl.hpp>
 #include <photon/film/image_io.hpp>
+#include <photon/plan/plan_report.hpp>
 
 #include "setting_options.hpp"
 
@@ -210,6 +211,12 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         std::cout << '\n';
     }
     std::cout << "settings   " << settings_line(b.settings) << '\n';
+    const char* label = "plan       ";  // what a render of this scene will do (plan/effects_plan.hpp)
+    for (const std::string& line :
+         photon::plan_lines(photon::plan_effects(scene, b.camera, b.settings), photon::to_string(b.settings.mode))) {
+        std::cout << label << line << '\n';
+        label = "           ";
+    }
 }
 
 /// Progress of pass 2: a bar on a terminal, a line every 10% otherwise.
@@ -292,6 +299,9 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
                   << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "
                   << built.scene.materials().size() << " materials\n"
                   << "photon: " << settings_line(settings) << '\n';
+        for (const std::string& line : photon::plan_lines(photon::plan_effects(built.scene, built.camera, settings),
+                                                          photon::to_string(settings.mode)))
+            std::cerr << "photon: plan: " << line << '\n';
     }
 
     Progress progress(!so.quiet);

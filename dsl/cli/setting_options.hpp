@@ -32,6 +32,8 @@ public:
                 option = cmd.add_option(flag, integers_[i], help);
             } else if (s.kind == dsl::SettingKind::real) {
                 option = cmd.add_option(flag, reals_[i], help);
+            } else if (s.kind == dsl::SettingKind::text) {
+                option = cmd.add_option(flag, names_[i], help);
             } else {
                 std::vector<std::string> names;
                 for (const dsl::RenderModeName& m : dsl::render_mode_names) names.emplace_back(m.name);

@@ -55,11 +55,15 @@
 
 #include "integrator/boundary_probe.hpp"
 #include "integrator/direct_lighting.hpp"
+#include "integrator/effect_switches.hpp"
 #include "integrator/radiance.hpp"
 #include "integrator/render.hpp"
 #include "integrator/render_settings.hpp"
 #include "integrator/render_stats.hpp"
 #include "integrator/shading_context.hpp"
+#include "plan/effects_plan.hpp"
+#include "plan/plan_report.hpp"
+#include "plan/shape_facts.hpp"
 
 #include "film/film.hpp"
 #include "film/tone_map.hpp"

@@ -37,6 +37,7 @@ dsl::SettingValue test_value(const RenderSetting& s) {
         for (const dsl::RenderModeName& m : dsl::render_mode_names)
             if (m.in_scene && dsl::SettingValue(std::string(m.name)) != fallback) return std::string(m.name);
     }
+    if (s.kind == SettingKind::text) return std::string("caustics=off,indirect=on");  // the one text setting, effects
     if (s.kind == SettingKind::integer) {
         std::uint64_t v = std::uint64_t(s.lo) + 2;
         if (dsl::SettingValue(v) == fallback) ++v;
@@ -54,7 +55,8 @@ std::string scene_with_every_setting() {
     std::map<std::string, std::string> blocks;
     for (const RenderSetting& s : dsl::render_settings_table) {
         if (s.keyword.empty()) continue;
-        const std::string item = std::string(s.keyword) + " " + dsl::format_setting_value(test_value(s));
+        const std::string value = dsl::format_setting_value(test_value(s));
+        const std::string item = std::string(s.keyword) + " " + (s.kind == SettingKind::text ? '"' + value + '"' : value);
         if (!s.block.empty())
             blocks[std::string(s.block)] += " " + item;
         else
@@ -133,6 +135,7 @@ TEST_CASE("a file's setting out of its bounds is an error where it is written, n
         if (s.keyword.empty()) continue;
         INFO(s.key);
         std::string bad = s.kind == SettingKind::mode      ? "fast"
+                          : s.kind == SettingKind::text    ? "\"fast\""
                           : s.kind == SettingKind::integer ? dsl::format_whole(s.hi + 1)
                           : s.hi != dsl::unbounded         ? dsl::format_number(s.hi + 1)
                                                            : dsl::format_number(s.lo - 1);
@@ -155,7 +158,8 @@ TEST_CASE("an override out of its bounds names its option and the bounds", "[dsl
     const auto desc = dsl::parse_string(std::string(stage) + "sphere { 0, 1 }\n", "test.pov");
     for (const RenderSetting& s : dsl::render_settings_table) {
         INFO(s.key);
-        const dsl::SettingValue bad = s.kind == SettingKind::mode      ? dsl::SettingValue(std::string("fast"))
+        const dsl::SettingValue bad = s.kind == SettingKind::mode || s.kind == SettingKind::text
+                                          ? dsl::SettingValue(std::string("fast"))
                                       : s.kind == SettingKind::integer ? dsl::SettingValue(std::uint64_t(s.hi) + 1)
                                       : s.hi != dsl::unbounded         ? dsl::SettingValue(s.hi + 1)
                                                                        : dsl::SettingValue(s.lo - 1);
@@ -229,10 +233,14 @@ std::string docs_table() {
             if (m.in_scene && dsl::render_mode_name(m.mode) == m.name)
                 scene_names.append(scene_names.empty() ? "" : "|").append(m.name);
         }
-        const std::string arg = s.kind == SettingKind::mode ? scene_names : s.kind == SettingKind::real ? "X" : "N";
+        const std::string arg = s.kind == SettingKind::mode   ? scene_names
+                                : s.kind == SettingKind::real ? "X"
+                                : s.kind == SettingKind::text ? "SPEC"
+                                                              : "N";
         std::string item;
         if (!s.keyword.empty()) {
-            item = s.block.empty() ? std::string(s.keyword) + " " + arg
+            const std::string written = s.kind == SettingKind::text ? '"' + arg + '"' : arg;
+            item = s.block.empty() ? std::string(s.keyword) + " " + written
                                    : std::string(s.block) + " { " + std::string(s.keyword) + " " + arg + " }";
             item = "`" + escape_bars(item) + "` (" + (s.povray ? "POV-Ray" : "photon") + ")";
         }
@@ -241,6 +249,8 @@ std::string docs_table() {
         std::string values;
         if (s.kind == SettingKind::mode)
             values = "a mode name";
+        else if (s.kind == SettingKind::text)
+            values = "EFFECT=on/off/auto, ...";
         else if (s.kind == SettingKind::integer)
             values = dsl::format_whole(s.lo) + " to " + dsl::format_whole(s.hi);
         else if (s.hi != dsl::unbounded)

@@ -5,6 +5,7 @@
 // soft shadows. Phong highlights are added here only, for direct light.
 
 #include <cmath>
+#include <vector>
 
 #include "../geometry/bbox.hpp"
 #include "../light/light.hpp"
@@ -37,14 +38,20 @@ template <Scalar S>
 /// The light is evaluated at x itself, not at the offset origin: the offset grows with the
 /// distance from the world origin (1.5 cm at 1000 units in float) and would otherwise bias
 /// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
+/// Lights with `reaches[l] == false` are skipped: the light-path plan proved that none of their
+/// light reaches a point the camera sees (walled off, or zero power), so their shadow rays
+/// would all add zero. Empty: every light is sampled.
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
                                      const Vec3<S>& n, const Vec3<S>& wo, const Material<S>& material,
-                                     unsigned shadow_samples, ShadingContext& ctx) {
+                                     unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {}) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
     const S phong = material.params().phong;
-    for (const Light<S>& light : scene.lights()) {
+    const auto lights = scene.lights();
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        if (l < reaches.size() && !reaches[l]) continue;
+        const Light<S>& light = lights[l];
         const IncidentSampler<S> sampler(light, x);
         const bool area = sampler.is_area();
         const unsigned grid = area ? strata_per_axis(shadow_samples) : 1u;

@@ -7,6 +7,7 @@
 
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "../estimator/irradiance_cache.hpp"
 #include "../estimator/precomputed_irradiance.hpp"
@@ -34,8 +35,11 @@ template <class SceneT> class RadianceIntegrator {
 public:
     using S = typename SceneT::scalar_type;
 
-    RadianceIntegrator(const SceneT& scene, const PhotonMaps& maps, const RenderSettings& settings) noexcept
-        : scene_(scene), maps_(maps), settings_(settings) {}
+    /// `lights_reaching[l] == false`: light l sends nothing to what the camera sees (the
+    /// light-path plan's shadowed lights), so no shadow ray is traced to it; empty: all lights.
+    RadianceIntegrator(const SceneT& scene, const PhotonMaps& maps, const RenderSettings& settings,
+                       std::vector<bool> lights_reaching = {}) noexcept
+        : scene_(scene), maps_(maps), settings_(settings), lights_reaching_(std::move(lights_reaching)) {}
 
     /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray.
     [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
@@ -51,10 +55,12 @@ public:
             const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
             switch (settings_.mode) {
             case RenderMode::rt:
-                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
+                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx,
+                                          lights_reaching_);
                 break;
             case RenderMode::pm:
-                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx);
+                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx,
+                                          lights_reaching_);
                 result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
                                       ? final_gather(above, f.normal, ctx)
@@ -235,6 +241,7 @@ private:
     const SceneT& scene_;
     const PhotonMaps& maps_;
     const RenderSettings& settings_;
+    std::vector<bool> lights_reaching_;
 };
 
 }  // namespace photon

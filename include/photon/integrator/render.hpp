@@ -8,6 +8,7 @@
 
 #include "../film/film.hpp"
 #include "../parallel/parallel_for.hpp"
+#include "../plan/effects_plan.hpp"
 #include "../scene/camera.hpp"
 #include "../tracing/photon_tracer.hpp"
 #include "irradiance_cache_pass.hpp"
@@ -83,16 +84,18 @@ template <class SceneT>
     return PrecomputedIrradiance(samples);
 }
 
-/// Pass 1: traces and balances the photon maps the mode needs. `rt` needs none. Caustics come
-/// from two maps: the caustic pass's photons (aimed at the caustic targets), and the global
-/// pass's L S+ D photons from every direction the caustic pass does not aim into, kept apart
-/// because they are as sparse as the global map's and are read with its estimate settings
-/// (unaimed_specular_objects() lists the mirrors and glass only they serve, with a warning).
+/// Pass 1: traces and balances the photon maps the mode needs and `plan` keeps (plan_effects():
+/// a map the scene cannot show is not built, a light hidden from the image shoots no photons).
+/// `rt` needs none. Caustics come from two maps: the caustic pass's photons (aimed at the
+/// caustic targets), and the global pass's L S+ D photons from every direction the caustic pass
+/// does not aim into, kept apart because they are as sparse as the global map's and are read
+/// with its estimate settings (unaimed_specular_objects() lists the mirrors and glass only they
+/// serve, with a warning).
 template <class SceneT>
-[[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const RenderSettings& settings, RenderStats& stats) {
+[[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const EffectsPlan& plan, const RenderSettings& settings,
+                                           RenderStats& stats) {
     PhotonMaps maps;
-    if (settings.mode == RenderMode::rt || settings.mode == RenderMode::reference || settings.mode == RenderMode::sppm)
-        return maps;
+    if (!plan.planned) return maps;  // rt, reference and sppm build no photon maps here
     auto settle = [](std::optional<PhotonMap>& map, std::span<const Photon> photons, PhotonMapStats& st) {
         const auto start = std::chrono::steady_clock::now();
         map.emplace(photons);
@@ -117,9 +120,10 @@ template <class SceneT>
                                .threads = settings.threads,
                                .progress = report(RenderPhase::caustic_photons),
                                .cancel = settings.cancel};
-    const bool caustics = scene_has_caustics(scene);
-    const auto aim = caustic_aim(scene);
-    const bool caustic_pass = caustics && settings.caustic_photons > 0 && !aim.empty();
+    pass.light_emits = plan.light_emits();
+    const bool caustics = plan.caustics.present && settings.effects.caustics != EffectSwitch::off;
+    const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
+    const bool caustic_pass = plan.caustic_pass;
     std::vector<Photon> caustic_photons;
     if (caustic_pass) {
         TracedPhotons traced = trace_caustic_photons(scene, pass, aim);
@@ -129,12 +133,12 @@ template <class SceneT>
     if (caustics)
         for (std::uint32_t id : unaimed_specular_objects(scene))
             stats.warnings.push_back({unaimed_caustics_warning, id});
-    if (settings.global_photons > 0 && !cancelled()) {
-        pass.photons = settings.global_photons;
+    if (plan.global_pass && !cancelled()) {
+        pass.photons = plan.global_photons;
         pass.progress = report(RenderPhase::global_photons);
-        pass.store = global_map_contents(settings);
-        pass.keep_normals = uses_precomputed_irradiance(settings);
-        pass.collect_unaimed_caustics = caustics;
+        pass.store = plan.global_store;
+        pass.keep_normals = plan.precomputed_irradiance;
+        pass.collect_unaimed_caustics = plan.global_collects_caustics;
         TracedPhotons traced = trace_global_photons(scene, pass, caustic_pass ? aim : decltype(aim){});
         count(traced, stats.global);
         if (!traced.unaimed_caustics.empty()) maps.unaimed_caustic.emplace(std::span<const Photon>(traced.unaimed_caustics));
@@ -154,15 +158,24 @@ template <class SceneT>
     return maps;
 }
 
+/// Pass 1 under the plan for `scene` and `settings` without a camera (the inferences that need
+/// one are not made).
+template <class SceneT>
+[[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const RenderSettings& settings, RenderStats& stats) {
+    return build_photon_maps(scene, plan_effects(scene, std::nullopt, settings), settings, stats);
+}
+
 /// Pass 2: one radiance estimate per jittered sample, averaged per pixel. Pixel p draws from
-/// random stream p, so the film does not depend on the thread count.
+/// random stream p, so the film does not depend on the thread count. Lights with
+/// `lights_reaching[l] == false` get no shadow rays (EffectsPlan::light_emits; empty: all do).
 template <class SceneT>
 [[nodiscard]] Film render_image(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
-                                const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats) {
+                                const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats,
+                                const std::vector<bool>& lights_reaching = {}) {
     using S = typename SceneT::scalar_type;
     const auto start = std::chrono::steady_clock::now();
     Film film(settings.width, settings.height);
-    const RadianceIntegrator<SceneT> integrator(scene, maps, settings);
+    const RadianceIntegrator<SceneT> integrator(scene, maps, settings, lights_reaching);
     const PathTracer<SceneT> path_tracer(scene, settings);
     const bool reference = settings.mode == RenderMode::reference;
     const unsigned grid = settings.samples_per_pixel == 1 ? 1u : strata_per_axis(settings.samples_per_pixel);
@@ -226,13 +239,20 @@ template <class SceneT>
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
-    PhotonMaps maps = build_photon_maps(scene, settings, stats);
+    const EffectsPlan plan = plan_effects(scene, camera, settings);
+    stats.plan = {plan.photons_not_shot, plan.photons_moved, plan.passes_skipped};
+    // Pass 2 obeys the plan too: without final gathering, pm reads the global map (absent or
+    // empty when the plan dropped indirect light) instead of gathering from it.
+    RenderSettings obeyed = settings;
+    if (plan.planned && !plan.final_gather) obeyed.final_gather_rays = 0;
+    PhotonMaps maps = build_photon_maps(scene, plan, settings, stats);
     if (settings.cancel && settings.cancel->load()) {
         result.film = Film(settings.width, settings.height);  // nothing rendered yet
         stats.partial = true;
     } else {
-        if (uses_irradiance_cache(settings)) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, settings, stats);
-        result.film = render_image(scene, camera, maps, settings, stats);
+        if (plan.irradiance_cache) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, obeyed, stats);
+        // A light the plan silenced sends nothing the camera sees: no shadow rays to it either.
+        result.film = render_image(scene, camera, maps, obeyed, stats, plan.planned ? plan.light_emits() : std::vector<bool>{});
     }
     stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

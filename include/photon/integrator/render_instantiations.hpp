@@ -14,10 +14,13 @@
 #define PHOTON_RENDER_INSTANTIATIONS(EXTERN, S)                                                                      \
     EXTERN template RenderResult render<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,            \
                                                          const RenderSettings&);                                     \
+    EXTERN template PhotonMaps build_photon_maps<DefaultScene<S>>(const DefaultScene<S>&, const EffectsPlan&,      \
+                                                                  const RenderSettings&, RenderStats&);              \
     EXTERN template PhotonMaps build_photon_maps<DefaultScene<S>>(const DefaultScene<S>&, const RenderSettings&,    \
                                                                   RenderStats&);                                     \
     EXTERN template Film render_image<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,              \
-                                                       const PhotonMaps&, const RenderSettings&, RenderStats&);      \
+                                                       const PhotonMaps&, const RenderSettings&, RenderStats&,       \
+                                                       const std::vector<bool>&);                                    \
     EXTERN template IrradianceCache build_irradiance_cache<DefaultScene<S>>(                                         \
         const DefaultScene<S>&, const PinholeCamera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
     EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,               \

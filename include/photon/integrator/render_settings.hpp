@@ -9,6 +9,7 @@
 
 #include "../estimator/density_estimate.hpp"
 #include "../light/light.hpp"
+#include "effect_switches.hpp"
 
 namespace photon {
 
@@ -83,6 +84,10 @@ struct RenderSettings {
     /// sppm: first gathering radius in scene units; 0 chooses it per pixel from the pixel's
     /// footprint at its first visible point (integrator/sppm.hpp).
     float sppm_initial_radius = 0.0f;
+
+    /// Effects forced on or off against the light-path plan (effects_plan.hpp); all automatic:
+    /// the plan decides.
+    EffectSwitches effects{};
 
     std::uint64_t seed = 1;
     unsigned threads = 0;  ///< 0: all hardware threads; the image does not depend on it

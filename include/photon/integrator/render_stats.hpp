@@ -49,6 +49,13 @@ struct SppmStats {
     double photon_seconds = 0, gather_seconds = 0;  ///< photon tracing and tree building; camera pass and gathering
 };
 
+/// What the light-path plan saved against the settings (plan/effects_plan.hpp).
+struct PlanSavings {
+    std::uint64_t photons_not_shot = 0;  ///< asked for by the settings, not emitted
+    std::uint64_t photons_moved = 0;     ///< global photons of lights hidden from the image, given to the others
+    std::vector<std::string> passes_skipped;
+};
+
 struct RenderStats {
     unsigned width = 0, height = 0, threads = 0;
     std::string mode;
@@ -62,6 +69,7 @@ struct RenderStats {
     /// What the user should know about this render's result (light the mode cannot see, objects
     /// it serves less well), one sentence each; the CLI prints them as "photon: warning: ...".
     std::vector<RenderWarning> warnings;
+    PlanSavings plan;
 };
 
 /// The statistics as an aligned plain-text table.
@@ -96,6 +104,13 @@ struct RenderStats {
         (unsigned long long)s.rays.gather, (unsigned long long)s.rays.probe);
     row("density estimates", "%llu", (unsigned long long)s.estimates);
     row("irradiance cache", "%llu records", (unsigned long long)s.cache_records);
+    if (s.plan.photons_not_shot > 0 || s.plan.photons_moved > 0 || !s.plan.passes_skipped.empty()) {
+        std::string skipped;
+        for (const std::string& p : s.plan.passes_skipped) skipped += (skipped.empty() ? "" : ", ") + p;
+        row("plan saved", "%llu photons not shot, %llu moved from hidden lights; skipped: %s",
+            (unsigned long long)s.plan.photons_not_shot, (unsigned long long)s.plan.photons_moved,
+            skipped.empty() ? "nothing" : skipped.c_str());
+    }
     row("time", "precompute %.2f s, cache %.2f s, render %.2f s, total %.2f s", s.precompute_seconds,
         s.cache_seconds, s.render_seconds, s.total_seconds);
     return out;

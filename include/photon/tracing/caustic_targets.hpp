@@ -109,12 +109,14 @@ template <class SceneT> [[nodiscard]] bool is_aimable_target(const SceneT& scene
     return scene.is_caustic_target(i) && scene.object_bounds(i).is_finite();
 }
 
-/// The cones of every light towards every aimable caustic target.
-template <class SceneT> [[nodiscard]] CausticAim<typename SceneT::scalar_type> caustic_aim(const SceneT& scene) {
+/// The cones of every light towards every aimable caustic target, but those with `skip[i]` (the
+/// light-path plan's targets whose caustics the camera cannot see).
+template <class SceneT>
+[[nodiscard]] CausticAim<typename SceneT::scalar_type> caustic_aim(const SceneT& scene, const std::vector<bool>& skip = {}) {
     using S = typename SceneT::scalar_type;
     std::vector<std::pair<Vec3<S>, S>> targets;
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
-        if (!is_aimable_target(scene, i)) continue;
+        if (!is_aimable_target(scene, i) || (i < skip.size() && skip[i])) continue;
         const BBox<S> b = scene.object_bounds(i);
         targets.push_back({b.center(), glm::length(b.extent()) * S(0.5)});
     }

@@ -12,17 +12,23 @@ namespace photon {
 
 /// Splits `count` emitted photons among lights in proportion to their power (channel average),
 /// so that every photon of a pass starts with about the same power. Largest-remainder rounding:
-/// the counts sum to `count` exactly and depend only on the inputs.
+/// the counts sum to `count` exactly and depend only on the inputs. `emits[i] == false` gives
+/// light i no photons (the light-path plan found that none of its light reaches the image);
+/// an empty `emits` lets every light emit.
 template <Scalar S>
-[[nodiscard]] std::vector<std::size_t> photons_per_light(std::span<const Light<S>> lights, std::size_t count) {
+[[nodiscard]] std::vector<std::size_t> photons_per_light(std::span<const Light<S>> lights, std::size_t count,
+                                                         const std::vector<bool>& emits = {}) {
     std::vector<std::size_t> result(lights.size(), 0);
+    auto power = [&](std::size_t i) {
+        return i < emits.size() && !emits[i] ? 0.0 : double(average(light_power(lights[i])));
+    };
     double total = 0;
-    for (const auto& l : lights) total += double(average(light_power(l)));
+    for (std::size_t i = 0; i < lights.size(); ++i) total += power(i);
     if (lights.empty() || !(total > 0)) return result;
     std::vector<double> remainder(lights.size());
     std::size_t assigned = 0;
     for (std::size_t i = 0; i < lights.size(); ++i) {
-        const double exact = double(count) * double(average(light_power(lights[i]))) / total;
+        const double exact = double(count) * power(i) / total;
         result[i] = static_cast<std::size_t>(std::floor(exact));
         remainder[i] = exact - double(result[i]);
         assigned += result[i];

@@ -44,6 +44,8 @@ struct PhotonTracingSettings {
     /// Global pass: also return the L S+ D photons the caustic pass does not cover
     /// (TracedPhotons::unaimed_caustics), whatever `store` says.
     bool collect_unaimed_caustics = false;
+    /// Per light, whether it emits photons (photons_per_light); empty: every light does.
+    std::vector<bool> light_emits{};
     std::uint64_t seed = 1;
     unsigned threads = 0;         ///< 0: all hardware threads
     std::function<void(double)> progress{};  ///< fraction of photons emitted; serialised calls
@@ -77,15 +79,17 @@ struct PhotonBlock {
 template <Scalar S> struct EmissionPlan {
     std::vector<std::size_t> first;  // first photon index of each light
     std::vector<Rgb<S>> scale;       // power carried by each photon of a light, before any weighting
+    std::size_t emitting = 0;        // photons given to lights: 0 when no light may emit
 
-    template <class Lights> EmissionPlan(const Lights& lights, std::size_t count) {
-        const auto counts = photons_per_light<S>(lights, count);
+    template <class Lights> EmissionPlan(const Lights& lights, std::size_t count, const std::vector<bool>& emits = {}) {
+        const auto counts = photons_per_light<S>(lights, count, emits);
         std::size_t at = 0;
         for (std::size_t l = 0; l < counts.size(); ++l) {
             first.push_back(at);
             scale.push_back(counts[l] ? light_power(lights[l]) / S(counts[l]) : Rgb<S>(S(0)));
             at += counts[l];
         }
+        emitting = at;
     }
     [[nodiscard]] std::size_t light_of(std::size_t photon) const noexcept {
         std::size_t l = 0;
@@ -206,7 +210,8 @@ template <class SceneT>
     // No light, or none with power: nothing to emit. (Emitting anyway traced photons of zero
     // power, and without lights read lights[0] out of range.)
     if (!detail::has_emitting_light(lights)) return {};
-    const detail::EmissionPlan<S> plan(lights, settings.photons);
+    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits);
+    if (plan.emitting == 0) return {};
     return detail::run_blocks(settings, 0x676c6f62616cULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);
         const Light<S>& light = lights[l];
@@ -237,7 +242,8 @@ template <class SceneT>
     using S = typename SceneT::scalar_type;
     if (aim.empty() || !scene_has_caustics(scene)) return {};
     const auto lights = scene.lights();
-    const detail::EmissionPlan<S> plan(lights, settings.photons);
+    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits);
+    if (plan.emitting == 0) return {};
     return detail::run_blocks(settings, 0x636175737469ULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);
         const Light<S>& light = lights[l];

@@ -81,8 +81,10 @@ private:
         for (const RenderSetting& s : render_settings_table) {
             if (s.povray != povray || s.keyword.empty() || (!s.block.empty() && s.block == done_block)) continue;
             if (s.block.empty()) {
-                if (const auto it = g.render.find(std::string(s.key)); it != g.render.end())
-                    out << "  " << s.keyword << ' ' << format_setting_value(it->second.value) << '\n';
+                if (const auto it = g.render.find(std::string(s.key)); it != g.render.end()) {
+                    const std::string value = format_setting_value(it->second.value);
+                    out << "  " << s.keyword << ' ' << (s.kind == SettingKind::text ? '"' + value + '"' : value) << '\n';
+                }
                 continue;
             }
             done_block = s.block;

@@ -59,8 +59,9 @@ inline constexpr RenderModeName render_mode_names[] = {
     return "?";
 }
 
-/// What a setting's value is: a whole number (a count, a depth, a seed), a real, or a mode name.
-enum class SettingKind { integer, real, mode };
+/// What a setting's value is: a whole number (a count, a depth, a seed), a real, a mode name, or
+/// a string (a quoted string in a file) that the setting's own `text_problem` checks.
+enum class SettingKind { integer, real, mode, text };
 
 /// How the table reaches a RenderSettings field: set it from a checked value, read it back.
 struct SettingField {
@@ -74,6 +75,8 @@ template <class T>
 T from_setting_value(const SettingValue& v) {
     if constexpr (std::is_same_v<T, RenderMode>) {
         return find_render_mode(std::get<std::string>(v))->mode;
+    } else if constexpr (std::is_same_v<T, EffectSwitches>) {
+        return parse_effect_switches(std::get<std::string>(v));
     } else if constexpr (std::is_floating_point_v<T>) {
         return std::holds_alternative<double>(v) ? T(std::get<double>(v)) : T(std::get<std::uint64_t>(v));
     } else {
@@ -93,6 +96,8 @@ template <class T>
 SettingValue to_setting_value(T v) {
     if constexpr (std::is_same_v<T, RenderMode>)
         return std::string(render_mode_name(v));
+    else if constexpr (std::is_same_v<T, EffectSwitches>)
+        return to_string(v);
     else if constexpr (std::is_same_v<T, float>)
         return float_as_written(v);
     else if constexpr (std::is_floating_point_v<T>)
@@ -142,6 +147,8 @@ struct RenderSetting {
     std::string_view noun;          ///< what messages call it ("samples per pixel")
     std::string_view help;          ///< for --help and the docs
     SettingField field{};
+    /// A text setting: why a value is not one of it ("must be ..."), or nothing.
+    std::optional<std::string> (*text_problem)(std::string_view) = nullptr;
 };
 
 // Each entry names only the members it sets (the others keep their defaults), which GCC's
@@ -234,6 +241,11 @@ inline constexpr RenderSetting render_settings_table[] = {
     {.key = "sppm_photons_per_pass", .keyword = "sppm_photons", .flag = "--photons-per-pass", .lo = 1,
      .hi = double(SettingsLimits::max_sppm_photons_per_pass), .noun = "sppm photons per pass",
      .help = "sppm: photons emitted per pass", .field = member<&RenderSettings::sppm_photons_per_pass>},
+    {.key = "effects", .keyword = "effects", .flag = "--effects", .kind = SettingKind::text, .noun = "effects",
+     .help = "Effects forced on or off against the light-path plan, e.g. caustics=off,indirect=on "
+             "(caustics, indirect: on, off or auto; lights=on: photons also from lights the plan finds "
+             "hidden); see docs/effects-plan.md",
+     .field = member<&RenderSettings::effects>, .text_problem = &effect_switches_problem},
     {.key = "seed", .keyword = "seed", .flag = "--seed", .hi = 1e12, .noun = "seed",
      .help = "Random seed; the same seed gives the same image", .field = member<&RenderSettings::seed>},
     {.key = "threads", .flag = "--threads", .hi = 65536, .noun = "threads",
@@ -315,6 +327,11 @@ constexpr std::size_t count_photon_items() {
         std::string names;
         for (const RenderModeName& m : render_mode_names) names += (names.empty() ? "" : ", ") + std::string(m.name);
         return "must be one of " + names + ", found " + (name ? *name : format_setting_value(v));
+    }
+    if (s.kind == SettingKind::text) {
+        const auto* text = std::get_if<std::string>(&v);
+        if (!text) return "must be a string, found " + format_setting_value(v);
+        return s.text_problem ? s.text_problem(*text) : std::nullopt;
     }
     if (std::holds_alternative<std::string>(v)) return "must be a number, found " + std::get<std::string>(v);
     const double x = std::holds_alternative<double>(v) ? std::get<double>(v) : double(std::get<std::uint64_t>(v));

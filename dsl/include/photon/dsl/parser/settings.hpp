@@ -74,7 +74,7 @@ inline void Parser::parse_global_settings(const Token& kw) {
                 known);
 }
 
-// SETTING_VALUE: WHOLE_NUMBER | FLOAT | MODE_NAME, as the settings table says for the item just read
+// SETTING_VALUE: WHOLE_NUMBER | FLOAT | MODE_NAME | STRING, as the settings table says for the item just read
 inline void Parser::parse_table_setting(const RenderSetting& s, const Token& kw) {
     // Messages name a top-level item by its keyword, an item of a block by what it is.
     const std::string subject = s.block.empty() ? "`" + kw.text + "`" : std::string(s.noun);
@@ -86,6 +86,11 @@ inline void Parser::parse_table_setting(const RenderSetting& s, const Token& kw)
         const double x = parse_float(subject, &at);
         if (const auto problem = setting_value_problem(s, x)) fail(at, subject + " " + *problem);
         v = x;
+    } else if (s.kind == SettingKind::text) {
+        const SourceLocation at = peek().location;
+        std::string text = parse_string_expression("a string after `" + kw.text + "`");
+        if (const auto problem = setting_value_problem(s, text)) fail(at, subject + " " + *problem);
+        v = std::move(text);
     } else {
         const Token m = next();
         const RenderModeName* mode = m.kind == TokenKind::string || m.kind == TokenKind::identifier

@@ -1,0 +1,364 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The light-path plan: before any photon is traced, which of Heckbert's path classes (the
+// paper's section 2) the scene can produce and the camera can see, and from that which photon
+// maps are built with how many photons, which passes run, and, for everything dropped, why.
+// render() obeys it and embedders can call plan_effects() to see the same decisions.
+//
+// Conservative: an inference drops work only when it proves that the work cannot change the
+// image (no mirror or glass: no caustics; one flat or convex diffuse surface and nothing
+// specular: light never bounces twice; a light walled off from the camera, inside a closed
+// opaque solid the camera is outside of or behind an opaque plane, or whose cone meets nothing,
+// or without power: none of its light reaches the image, so it gets neither photons nor shadow
+// rays; a mirror or glass object walled off the same way: its caustics cannot be seen, so no
+// caustic photon is aimed at it). Anything it cannot prove is kept. RenderSettings::effects
+// forces an effect either way. docs/effects-plan.md lists the rules.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "../integrator/render_settings.hpp"
+#include "../scene/camera.hpp"
+#include "../tracing/caustic_targets.hpp"
+#include "../tracing/light_allocation.hpp"
+#include "../tracing/photon_tracer.hpp"
+#include "shape_facts.hpp"
+
+namespace photon {
+
+/// One of Heckbert's path classes: whether the image can show it, and why (one line).
+struct PathClassPlan {
+    bool present = false;
+    std::string reason;
+};
+
+/// What the plan decided for one light.
+struct LightPlan {
+    bool emits = true;        ///< photons are shot from it
+    std::string reason;       ///< why not (empty when it emits)
+    std::size_t global_photons = 0, caustic_photons = 0;  ///< its share of each pass
+};
+
+struct EffectsPlan {
+    /// False for modes with passes of their own (rt, reference, sppm): the path classes are
+    /// still worked out, but nothing is dropped (sppm is the judge and must see every path).
+    bool planned = false;
+    PathClassPlan direct;         ///< L D E
+    PathClassPlan indirect;       ///< L D D+ E (and L D (S|D)* D E)
+    PathClassPlan caustics;       ///< L S+ D E
+    PathClassPlan specular_view;  ///< L (S|D)* S+ E: seen in mirrors and through glass
+    std::vector<std::uint32_t> caustic_objects;  ///< the mirror and glass objects that carry caustics
+    std::vector<std::string> caustic_object_names;  ///< "object 5 (sphere)", one per caustic_objects entry
+    /// Per object: a mirror or glass object whose caustics the camera cannot see (walled off),
+    /// at which the caustic pass does not aim (caustic_aim's `skip`).
+    std::vector<bool> hidden_caustic_objects;
+
+    std::vector<LightPlan> lights;
+    bool global_pass = false, caustic_pass = false;
+    bool precomputed_irradiance = false, irradiance_cache = false, final_gather = false;
+    /// The global pass hands the caustic map the L S+ D photons the caustic pass does not cover
+    /// (an infinite mirror plane's, or all of them when there is no caustic pass).
+    bool global_collects_caustics = false;
+    /// The global pass runs only for those: it stores nothing else.
+    bool global_for_unaimed_caustics_only = false;
+    PathKinds global_store{};  ///< what the global map holds, if built
+    std::size_t global_photons = 0, caustic_photons = 0;  ///< emitted by the passes that run
+
+    /// What the settings asked for and the plan does not do, one line each naming the object or
+    /// light and the reason ("caustic photons: no mirror or glass surface").
+    std::vector<std::string> dropped;
+    std::vector<std::string> passes_skipped;  ///< the passes the settings would run and the plan does not
+    std::uint64_t photons_not_shot = 0;       ///< photons the settings asked for and the plan does not emit
+    std::uint64_t photons_moved = 0;          ///< global photons of hidden lights given to the others
+
+    /// Per light, whether it emits (PhotonTracingSettings::light_emits).
+    [[nodiscard]] std::vector<bool> light_emits() const {
+        std::vector<bool> e;
+        for (const auto& l : lights) e.push_back(l.emits);
+        return e;
+    }
+};
+
+namespace plan_detail {
+
+template <class SceneT> [[nodiscard]] std::string object_name(const SceneT& scene, std::uint32_t i) {
+    return "object " + std::to_string(i) + " (" +
+           std::visit([](const auto& shape) { return plan::shape_name(shape); }, scene.objects()[i].shape) + ")";
+}
+
+template <Scalar S> [[nodiscard]] std::string light_name(const Light<S>& light, std::size_t i) {
+    const Vec3<S> c = light_center(light);
+    char at[96];
+    std::snprintf(at, sizeof at, "<%g, %g, %g>", double(c.x), double(c.y), double(c.z));
+    return "light " + std::to_string(i) + " (" + (light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + ")";
+}
+
+/// Whether some ray leaving `light` can hit object `i`: false only when the light has a cone
+/// and the cone misses the cone of directions to the object's bounding sphere (widened by the
+/// light's radius), or, for a plane, points wholly away from it.
+template <class SceneT>
+[[nodiscard]] bool cone_can_reach(const SceneT& scene, const Light<typename SceneT::scalar_type>& light, std::uint32_t i) {
+    using S = typename SceneT::scalar_type;
+    const auto& cone = light_cone(light);
+    if (!cone) return true;
+    constexpr double margin = 1e-3;  // radians, for rounding
+    const double half = double(cone->half_angle_degrees()) * pi<double> / 180.0;
+    const Vec3<double> axis(cone->axis()), origin(light_center(light));
+    const double light_r = double(light_radius(light));
+    const auto angle_to = [&](const Vec3<double>& d) { return std::acos(std::clamp(glm::dot(axis, d), -1.0, 1.0)); };
+    const BBox<S> b = scene.object_bounds(i);
+    if (b.is_finite()) {
+        const Vec3<double> to = Vec3<double>(b.center()) - origin;
+        const double d = glm::length(to);
+        const double reach = 0.5 * glm::length(Vec3<double>(b.extent())) + light_r;
+        if (!(d > reach)) return true;
+        return angle_to(to / d) <= half + std::asin(reach / d) + margin;
+    }
+    if (const auto* plane = std::get_if<Plane<S>>(&scene.objects()[i].shape)) {
+        const Vec3<double> n(plane->normal());
+        const double side = glm::dot(n, origin) - double(plane->offset());
+        if (!(std::abs(side) > light_r)) return true;
+        const Vec3<double> towards = side > 0 ? -n : n;
+        return angle_to(towards) < pi<double> / 2 + half + margin;
+    }
+    return true;  // unbounded and not a plane: assume it can be reached
+}
+
+/// Why nothing the camera at `eye` sees can receive light from the ball (centre, radius), or
+/// nothing when that is not proved: the ball is inside a closed opaque convex solid the camera is
+/// outside of, or an opaque infinite plane has the ball strictly on one side and the camera on the
+/// other. Opaque: no transmission, and casting shadows (so that shadow rays stop there too).
+/// Object `self` (the ball's own object, if any) is not a wall.
+template <class SceneT>
+[[nodiscard]] std::optional<std::string> walled_off(const SceneT& scene, const Vec3<typename SceneT::scalar_type>& eye,
+                                                    const Vec3<typename SceneT::scalar_type>& center,
+                                                    typename SceneT::scalar_type radius, std::int64_t self = -1) {
+    using S = typename SceneT::scalar_type;
+    const auto objects = scene.objects();
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+        const auto& o = objects[i];
+        if (std::int64_t(i) == self || !is_black(scene.material_of(i).params().transmission) || !o.options.casts_shadow)
+            continue;
+        const bool closed = std::visit([](const auto& s) { return plan::is_convex_solid(s); }, o.shape);
+        if (closed && !scene.object_bounds(i).contains(eye) &&
+            std::visit([&](const auto& s) { return plan::contains_ball(s, center, radius); }, o.shape))
+            return "inside " + object_name(scene, i) + ", a closed opaque solid the camera is outside of";
+        if (const auto* plane = std::get_if<Plane<S>>(&o.shape)) {
+            const S margin = S(1e-4) * std::max({max_component(glm::abs(eye)), max_component(glm::abs(center)), radius,
+                                                 std::abs(plane->offset())});
+            const S eye_side = glm::dot(plane->normal(), eye) - plane->offset();
+            const S ball_side = glm::dot(plane->normal(), center) - plane->offset();
+            if (std::abs(eye_side) > margin && std::abs(ball_side) > radius + margin && (eye_side > 0) != (ball_side > 0))
+                return "behind " + object_name(scene, i) + ", an opaque plane the camera is on the other side of";
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace plan_detail
+
+/// The plan for `scene` seen by a camera at `eye` (nothing: unknown, the inferences that need
+/// the camera are not made) under `settings`.
+template <class SceneT>
+[[nodiscard]] EffectsPlan plan_effects(const SceneT& scene, const std::optional<Vec3<typename SceneT::scalar_type>>& eye,
+                                       const RenderSettings& settings) {
+    using S = typename SceneT::scalar_type;
+    using plan_detail::object_name;
+    EffectsPlan plan;
+    const auto objects = scene.objects();
+    const auto lights = scene.lights();
+    const EffectSwitches& force = settings.effects;
+
+    // Lights: which can send light to anything the camera may see.
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        LightPlan lp;
+        const Light<S>& light = lights[l];
+        const std::string name = plan_detail::light_name(light, l);
+        if (!(max_component(light_power(light)) > S(0))) {
+            lp.emits = false;
+            lp.reason = name + ": no power";
+        } else if (force.lights != EffectSwitch::on) {
+            if (eye)
+                if (const auto why = plan_detail::walled_off(scene, *eye, light_center(light), light_radius(light))) {
+                    lp.emits = false;
+                    lp.reason = name + ": " + *why;
+                }
+            if (lp.emits && light_cone(light)) {
+                bool reaches = false;
+                for (std::uint32_t i = 0; i < objects.size() && !reaches; ++i)
+                    reaches = plan_detail::cone_can_reach(scene, light, i);
+                if (!reaches) {
+                    lp.emits = false;
+                    lp.reason = name + ": its cone meets no object";
+                }
+            }
+        }
+        plan.lights.push_back(std::move(lp));
+    }
+    bool lit = false;
+    for (const auto& lp : plan.lights) lit = lit || lp.emits;
+
+    // Surfaces.
+    std::vector<std::uint32_t> diffuse, specular;
+    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+        if (scene.material_of(i).has_diffuse()) diffuse.push_back(i);
+        if (scene.material_of(i).is_specular()) specular.push_back(i);
+    }
+    const std::string no_light = lights.empty() ? "no light" : "no light sends any light to the scene";
+
+    plan.direct.present = lit && !diffuse.empty();
+    plan.direct.reason = !lit ? no_light : diffuse.empty() ? "no diffuse surface" : "";
+
+    plan.specular_view.present = lit && !specular.empty() && settings.max_ray_depth > 1;
+    plan.specular_view.reason = !lit             ? no_light
+                                : specular.empty() ? "no mirror or glass surface"
+                                : settings.max_ray_depth > 1 ? ""
+                                                             : "max ray depth 1: camera rays end at the first hit";
+
+    // Caustics of a mirror or glass object walled off from the camera land where it cannot see.
+    plan.hidden_caustic_objects.assign(objects.size(), false);
+    std::vector<std::uint32_t> seen_specular;
+    std::vector<std::string> walled;
+    for (std::uint32_t i : specular) {
+        const BBox<S> b = scene.object_bounds(i);
+        std::optional<std::string> why;
+        if (eye && b.is_finite() && force.caustics != EffectSwitch::on)
+            why = plan_detail::walled_off(scene, *eye, b.center(), S(0.5) * glm::length(b.extent()), i);
+        if (!why) {
+            seen_specular.push_back(i);
+            continue;
+        }
+        plan.hidden_caustic_objects[i] = true;
+        walled.push_back(object_name(scene, i) + ": " + *why);
+    }
+    plan.caustics.present = lit && !seen_specular.empty() && !diffuse.empty();
+    plan.caustics.reason = !lit                   ? no_light
+                           : specular.empty()      ? "no mirror or glass surface"
+                           : diffuse.empty()       ? "no diffuse surface for caustics to land on"
+                           : seen_specular.empty() ? "every mirror and glass object is walled off from the camera"
+                                                   : "";
+    if (plan.caustics.present) plan.caustic_objects = seen_specular;
+    for (std::uint32_t i : plan.caustic_objects) plan.caustic_object_names.push_back(object_name(scene, i));
+
+    // Indirect light needs light to bounce off a diffuse surface onto a diffuse surface. With
+    // nothing specular to redirect it, one flat surface cannot light itself, nor can one convex
+    // solid whose lights are all outside it (light leaving its outside moves away from it).
+    bool indirect = lit && !diffuse.empty();
+    std::string indirect_reason = !lit ? no_light : diffuse.empty() ? "no diffuse surface" : "";
+    if (indirect && specular.empty() && diffuse.size() == 1) {
+        const std::uint32_t only = diffuse[0];
+        const auto& shape = objects[only].shape;
+        const bool flat = std::visit([](const auto& s) { return plan::is_flat(s); }, shape);
+        bool convex_lit_outside = std::visit([](const auto& s) { return plan::is_convex_solid(s); }, shape);
+        const BBox<S> b = scene.object_bounds(only);
+        for (std::size_t l = 0; l < lights.size() && convex_lit_outside; ++l) {
+            if (!plan.lights[l].emits) continue;
+            const Vec3<S> c = light_center(lights[l]);
+            const S r = light_radius(lights[l]);
+            convex_lit_outside = !b.overlaps(BBox<S>{c - r, c + r});
+        }
+        if (flat || convex_lit_outside) {
+            indirect = false;
+            indirect_reason = "one diffuse surface, " + object_name(scene, only) + (flat ? ", flat" : ", convex and lit from outside") +
+                              ", and no mirror or glass: light cannot reach it twice";
+        }
+    }
+    plan.indirect.present = indirect;
+    plan.indirect.reason = indirect_reason;
+
+    // Passes: only the photon-mapping modes build maps the plan can drop.
+    plan.planned = settings.mode == RenderMode::pm || settings.mode == RenderMode::pm_direct;
+    if (!plan.planned) return plan;
+    const auto forced = [](EffectSwitch s, bool inferred) {
+        return s == EffectSwitch::on ? true : s == EffectSwitch::off ? false : inferred;
+    };
+    const bool want_caustics = forced(force.caustics, plan.caustics.present);
+    const bool want_indirect = forced(force.indirect, plan.indirect.present);
+    const auto drop = [&](const std::string& what, const std::string& why, bool by_user) {
+        plan.dropped.push_back(what + ": " + (by_user ? "forced off (effects)" : why));
+    };
+
+    // Caustic pass, as render() runs it: aimed at the caustic targets, from the lights that emit.
+    const std::vector<bool> emits = plan.light_emits();
+    const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
+    const bool any_emits = [&] {
+        for (std::size_t l = 0; l < lights.size(); ++l)
+            if (emits[l] && max_component(light_power(lights[l])) > S(0)) return true;
+        return false;
+    }();
+    plan.caustic_pass = want_caustics && settings.caustic_photons > 0 && !aim.empty() && any_emits && !diffuse.empty();
+    if (settings.caustic_photons > 0 && !plan.caustic_pass) {
+        const std::string why = !plan.caustics.present ? plan.caustics.reason
+                                : aim.empty()           ? "no caustic target with finite bounds to aim at"
+                                                        : no_light;
+        drop("caustic photons", force.caustics == EffectSwitch::on ? "forced on, but " + why : why,
+             force.caustics == EffectSwitch::off);
+        plan.passes_skipped.push_back("caustic photons");
+    }
+    // The global pass also carries the caustics the caustic pass does not: those of mirrors and
+    // glass it cannot aim at, or all of them when it does not run.
+    const bool collect = want_caustics && plan.caustics.present;
+    bool unaimed = collect && !plan.caustic_pass;
+    for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
+    if (settings.caustic_photons > 0)
+        for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
+
+    const bool gathering = settings.mode == RenderMode::pm && settings.final_gather_rays > 0;
+    const bool all_light = settings.mode == RenderMode::pm_direct;  // direct light from the map too
+    const bool global_needed = want_indirect || (all_light && plan.direct.present) || unaimed;
+    plan.global_pass = settings.global_photons > 0 && global_needed && any_emits;
+    plan.global_collects_caustics = plan.global_pass && collect;
+    plan.global_for_unaimed_caustics_only = plan.global_pass && !want_indirect && !all_light;
+    plan.final_gather = gathering && want_indirect && plan.global_pass;
+    plan.precomputed_irradiance = plan.final_gather && settings.irradiance_stride > 0;
+    plan.irradiance_cache = plan.final_gather && settings.irradiance_cache_error > 0.0f;
+    plan.global_store = {.direct = plan.final_gather || all_light,
+                         .caustic = plan.final_gather,
+                         .indirect = want_indirect};
+    if (plan.global_for_unaimed_caustics_only) plan.global_store = {.direct = false, .caustic = false, .indirect = false};
+    const std::string indirect_why = force.indirect == EffectSwitch::off ? "" : plan.indirect.reason;
+    if (settings.global_photons > 0 && !plan.global_pass) {
+        drop("global photons", any_emits ? indirect_why : no_light, force.indirect == EffectSwitch::off);
+        plan.passes_skipped.push_back("global photons");
+    }
+    if (gathering && !plan.final_gather) {
+        std::string what = "final gather";
+        if (settings.irradiance_stride > 0) what += ", precomputed irradiance";
+        if (settings.irradiance_cache_error > 0.0f) what += ", irradiance cache";
+        drop(what, indirect_why, force.indirect == EffectSwitch::off);
+        plan.passes_skipped.push_back("final gather");
+        if (settings.irradiance_stride > 0) plan.passes_skipped.push_back("precomputed irradiance");
+        if (settings.irradiance_cache_error > 0.0f) plan.passes_skipped.push_back("irradiance cache");
+    }
+
+    plan.global_photons = plan.global_pass ? settings.global_photons : 0;
+    plan.caustic_photons = plan.caustic_pass ? settings.caustic_photons : 0;
+    plan.photons_not_shot = (settings.global_photons - plan.global_photons) + (settings.caustic_photons - plan.caustic_photons);
+    const auto global_share = photons_per_light<S>(lights, plan.global_photons, emits);
+    const auto caustic_share = photons_per_light<S>(lights, plan.caustic_photons, emits);
+    const auto unplanned_share = photons_per_light<S>(lights, plan.global_photons);
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        plan.lights[l].global_photons = global_share[l];
+        plan.lights[l].caustic_photons = caustic_share[l];
+        if (!plan.lights[l].emits) {
+            plan.photons_moved += unplanned_share[l];
+            plan.dropped.push_back("photons from " + plan.lights[l].reason);
+        }
+    }
+    return plan;
+}
+
+/// The plan for `scene` seen by `camera` under `settings`.
+template <class SceneT>
+[[nodiscard]] EffectsPlan plan_effects(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+                                       const RenderSettings& settings) {
+    return plan_effects(scene, std::optional(camera.location()), settings);
+}
+
+}  // namespace photon

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The light-path plan as a few lines of text, for `photon check`, every render and embedders:
+// the path classes, the maps with their photons, the passes, and every dropped item's reason.
+
+#include <string>
+#include <vector>
+
+#include "effects_plan.hpp"
+
+namespace photon {
+
+/// One line per item, each "LABEL  text" with the labels padded to one width.
+[[nodiscard]] inline std::vector<std::string> plan_lines(const EffectsPlan& plan, const char* mode) {
+    std::vector<std::string> lines;
+    auto line = [&](const char* label, const std::string& text) {
+        std::string l(label);
+        l.resize(16, ' ');
+        lines.push_back(l + text);
+    };
+    auto verdict = [](const PathClassPlan& p, const std::string& yes) {
+        return p.present ? (yes.empty() ? std::string("yes") : "yes, " + yes) : "no: " + p.reason;
+    };
+    std::string carriers;
+    const auto& names = plan.caustic_object_names;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i == 4) {
+            carriers += " and " + std::to_string(names.size() - i) + " more";
+            break;
+        }
+        carriers += (i ? ", " : "from ") + names[i];
+    }
+    line("L D E", "direct light: " + verdict(plan.direct, ""));
+    line("L D D+ E", "indirect light: " + verdict(plan.indirect, ""));
+    line("L S+ D E", "caustics: " + verdict(plan.caustics, carriers));
+    line("L (S|D)* S+ E", "seen in mirrors and glass: " + verdict(plan.specular_view, ""));
+    if (!plan.planned) {
+        line("passes", std::string("mode ") + mode + "'s own; the plan drops nothing in this mode");
+        return lines;
+    }
+    std::string maps;
+    if (plan.global_pass)
+        maps += "global " + std::to_string(plan.global_photons) + " photons" +
+                (plan.global_for_unaimed_caustics_only ? " (for unaimed caustics only)" : "");
+    if (plan.caustic_pass) maps += (maps.empty() ? "" : ", ") + ("caustic " + std::to_string(plan.caustic_photons) + " photons");
+    line("maps", maps.empty() ? "none" : maps);
+    if (plan.lights.size() > 1 && (plan.global_pass || plan.caustic_pass)) {
+        std::string shares;
+        for (std::size_t l = 0; l < plan.lights.size(); ++l) {
+            if (l == 8) {
+                shares += "; ...";
+                break;
+            }
+            const LightPlan& lp = plan.lights[l];
+            shares += (l ? "; " : "") + std::to_string(l) + ": " +
+                      (lp.emits ? std::to_string(lp.global_photons) + " + " + std::to_string(lp.caustic_photons) : "none");
+        }
+        line("photons/light", shares + " (global + caustic)");
+    }
+    std::string passes;
+    auto pass = [&](bool runs, const char* name) {
+        if (runs) passes += (passes.empty() ? "" : ", ") + std::string(name);
+    };
+    pass(plan.caustic_pass, "caustic photons");
+    pass(plan.global_pass, "global photons");
+    pass(plan.precomputed_irradiance, "precomputed irradiance");
+    pass(plan.irradiance_cache, "irradiance cache");
+    pass(plan.final_gather, "final gather");
+    line("passes", passes.empty() ? "shadow rays and ray tracing only" : passes);
+    for (const std::string& d : plan.dropped) line("dropped", d);
+    return lines;
+}
+
+}  // namespace photon

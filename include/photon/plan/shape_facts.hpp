@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// What the light-path plan (effects_plan.hpp) may assume about a shape: whether it is flat (it
+// cannot light itself), a closed convex solid (lit from outside, it cannot light itself; a light
+// inside it lights only its inside), and whether a ball lies inside it. Only the library's own
+// shapes answer; a user's own primitive is "unknown", about which the plan assumes nothing, so
+// every answer errs on the side of keeping work.
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <type_traits>
+
+#include "../geometry/bbox.hpp"
+#include "../geometry/box.hpp"
+#include "../geometry/plane.hpp"
+#include "../geometry/sphere.hpp"
+#include "../geometry/transformed.hpp"
+#include "../geometry/triangle.hpp"
+#include "../geometry/triangle_mesh.hpp"
+
+namespace photon::plan {
+
+template <class T> struct is_transformed : std::false_type {};
+template <class P> struct is_transformed<Transformed<P>> : std::true_type {};
+
+/// What the shape is called in the plan's reasons ("sphere", "transformed box"; "object" for a
+/// user's own primitive).
+template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) {
+    using S = scalar_of<Shape>;
+    if constexpr (is_transformed<Shape>::value) return "transformed " + shape_name(shape.shape());
+    else if constexpr (std::is_same_v<Shape, Sphere<S>>) return "sphere";
+    else if constexpr (std::is_same_v<Shape, Plane<S>>) return "plane";
+    else if constexpr (std::is_same_v<Shape, Box<S>>) return "box";
+    else if constexpr (std::is_same_v<Shape, Triangle<S>>) return "triangle";
+    else if constexpr (std::is_same_v<Shape, TriangleMesh<S>>) return "mesh";
+    else return "object";
+}
+
+/// A plane or a triangle (also transformed: an affine map keeps it flat): no point of it sees
+/// another, so light it reflects never lands on it again.
+template <class Shape> [[nodiscard]] constexpr bool is_flat(const Shape& shape) {
+    using S = scalar_of<Shape>;
+    if constexpr (is_transformed<Shape>::value) return is_flat(shape.shape());
+    else return std::is_same_v<Shape, Plane<S>> || std::is_same_v<Shape, Triangle<S>>;
+}
+
+/// A sphere or a box (also transformed: an affine map keeps it convex and closed).
+template <class Shape> [[nodiscard]] constexpr bool is_convex_solid(const Shape& shape) {
+    using S = scalar_of<Shape>;
+    if constexpr (is_transformed<Shape>::value) return is_convex_solid(shape.shape());
+    else return std::is_same_v<Shape, Sphere<S>> || std::is_same_v<Shape, Box<S>>;
+}
+
+namespace detail {
+/// Whether `p` is inside a sphere or a box by more than `margin`.
+template <class Shape, Scalar S> [[nodiscard]] bool inside_by(const Shape& shape, const Vec3<S>& p, S margin) {
+    if constexpr (std::is_same_v<Shape, Sphere<S>>) {
+        return glm::length(p - shape.center()) < shape.radius() - margin;
+    } else if constexpr (std::is_same_v<Shape, Box<S>>) {
+        const BBox<S> b = shape.bounds();
+        for (int a = 0; a < 3; ++a)
+            if (!(p[a] > b.min[a] + margin && p[a] < b.max[a] - margin)) return false;
+        return true;
+    } else {
+        return false;
+    }
+}
+}  // namespace detail
+
+/// Whether the ball (centre, radius) lies inside the closed convex solid `shape`, with a margin
+/// of 1e-4 of the shape's largest coordinate (the scale rounding errors follow). A transformed
+/// solid holds the ball if it holds the eight corners of the ball's bounding cube (it is convex),
+/// tested in its own space.
+template <class Shape, Scalar S>
+[[nodiscard]] bool contains_ball(const Shape& shape, const Vec3<S>& center, S radius) {
+    if constexpr (is_transformed<Shape>::value) {
+        using Inner = std::remove_cvref_t<decltype(shape.shape())>;
+        if constexpr (!std::is_same_v<Inner, Sphere<S>> && !std::is_same_v<Inner, Box<S>>) {
+            return false;
+        } else {
+            const Affine<S> to_local = shape.to_world().inverse();
+            const S margin = S(1e-4) * shape.shape().bounds().magnitude();
+            for (int corner = 0; corner < 8; ++corner) {
+                const Vec3<S> p = center + radius * Vec3<S>((corner & 1) ? 1 : -1, (corner & 2) ? 1 : -1, (corner & 4) ? 1 : -1);
+                if (!detail::inside_by(shape.shape(), to_local.point(p), margin)) return false;
+            }
+            return true;
+        }
+    } else if constexpr (std::is_same_v<Shape, Sphere<S>>) {
+        return detail::inside_by(shape, center, radius + S(1e-4) * shape.bounds().magnitude());
+    } else if constexpr (std::is_same_v<Shape, Box<S>>) {
+        return detail::inside_by(shape, center, radius + S(1e-4) * shape.bounds().magnitude());
+    } else {
+        return false;
+    }
+}
+
+}  // namespace photon::plan

@@ -1,0 +1,330 @@
+// SPDX-License-Identifier: MIT
+// The light-path plan (plan/effects_plan.hpp): what it infers from small scenes, that render()
+// obeys it (maps not built, passes not run, hidden lights silent), that what it drops changes
+// nothing in the image, and that an effect forced on or off reaches the renderer.
+
+#include <catch2/catch.hpp>
+
+#include <photon/photon.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+using namespace photon;
+
+namespace {
+
+RenderSettings small(RenderMode mode = RenderMode::pm) {
+    RenderSettings s;
+    s.mode = mode;
+    s.width = 48;
+    s.height = 36;
+    s.samples_per_pixel = 4;
+    s.shadow_samples = 4;
+    s.global_photons = 20'000;
+    s.caustic_photons = 20'000;
+    s.final_gather_rays = 16;
+    return s;
+}
+
+bool identical(const Film& a, const Film& b) {
+    return a.width() == b.width() && a.height() == b.height() &&
+           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0;
+}
+
+PinholeCamera<float> camera_at(Vec3<float> eye, Vec3<float> target) {
+    return PinholeCamera<float>::look_at(eye, target, {0, 1, 0}, 60.0f, 4.0f / 3.0f);
+}
+
+/// A floor plane and whatever `more` adds, lit by a point light above; committed.
+template <class More> DefaultScene<float> floor_scene(More&& more) {
+    DefaultScene<float> scene;
+    const auto white = scene.add_material(Material<float>::lambertian(Rgb<float>(0.7f)));
+    scene.add(Plane<float>({0, 1, 0}, 0.0f), white);
+    scene.add_light(PointLight<float>{.position = {0, 3, 0}, .power = Rgb<float>(100.0f)});
+    more(scene, white);
+    scene.commit();
+    return scene;
+}
+
+/// A diffuse room of five boxes (open at the front) with a diffuse ball and a sphere light.
+DefaultScene<float> diffuse_room(bool glass_ball) {
+    DefaultScene<float> scene;
+    const auto white = scene.add_material(Material<float>::lambertian(Rgb<float>(0.75f)));
+    const auto red = scene.add_material(Material<float>::lambertian({0.75f, 0.25f, 0.25f}));
+    const auto ball = scene.add_material(glass_ball ? Material<float>::glass(1.5f) : Material<float>::lambertian(Rgb<float>(0.5f)));
+    scene.add(Box<float>({-1.22f, -0.02f, -1.2f}, {1.22f, 0.0f, 1.22f}), white);
+    scene.add(Box<float>({-1.22f, 1.8f, -1.2f}, {1.22f, 1.82f, 1.22f}), white);
+    scene.add(Box<float>({-1.22f, -0.02f, 1.2f}, {1.22f, 1.82f, 1.22f}), white);
+    scene.add(Box<float>({-1.22f, -0.02f, -1.2f}, {-1.2f, 1.82f, 1.22f}), red);
+    scene.add(Box<float>({1.2f, -0.02f, -1.2f}, {1.22f, 1.82f, 1.22f}), white);
+    scene.add(Sphere<float>({0.3f, 0.4f, 0.0f}, 0.4f), ball);
+    scene.add_light(SphereLight<float>{.center = {0, 1.5f, 0}, .radius = 0.1f, .power = Rgb<float>(30.0f)});
+    scene.commit();
+    return scene;
+}
+const PinholeCamera<float> room_camera = camera_at({0, 0.9f, -3.5f}, {0, 0.9f, 0});
+
+bool mentions(const std::vector<std::string>& lines, const std::string& text) {
+    return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(text) != l.npos; });
+}
+
+}  // namespace
+
+TEST_CASE("effects are forced by text: EFFECT=on|off|auto, read back as written", "[plan]") {
+    const EffectSwitches s = parse_effect_switches("caustics=off,indirect=on");
+    CHECK(s.caustics == EffectSwitch::off);
+    CHECK(s.indirect == EffectSwitch::on);
+    CHECK(s.lights == EffectSwitch::automatic);
+    CHECK(to_string(s) == "caustics=off,indirect=on");
+    CHECK(parse_effect_switches(to_string(s)) == s);
+    CHECK(parse_effect_switches("") == EffectSwitches{});
+    CHECK(parse_effect_switches("lights=on,lights=auto").lights == EffectSwitch::automatic);
+    CHECK_THROWS_WITH(parse_effect_switches("caustic=off"), Catch::Contains("caustics, indirect, lights"));
+    CHECK_THROWS_WITH(parse_effect_switches("indirect=maybe"), Catch::Contains("on, off or auto"));
+    CHECK_THROWS_WITH(parse_effect_switches("lights=off"), Catch::Contains("on or auto"));
+    CHECK(effect_switches_problem("caustics=on,"));  // an empty item names nothing
+    CHECK(effect_switches_problem("caustics=on,,indirect=off"));
+}
+
+TEST_CASE("the plan's inferences on small scenes", "[plan]") {
+    const RenderSettings s = small();
+    SECTION("a pure-diffuse room has direct and indirect light but no caustics") {
+        const EffectsPlan p = plan_effects(diffuse_room(false), room_camera, s);
+        CHECK(p.direct.present);
+        CHECK(p.indirect.present);
+        CHECK_FALSE(p.caustics.present);
+        CHECK_FALSE(p.caustic_pass);
+        CHECK(p.global_pass);
+        CHECK(p.final_gather);
+        CHECK(mentions(p.dropped, "caustic photons: no mirror or glass surface"));
+        CHECK(p.photons_not_shot == s.caustic_photons);
+    }
+    SECTION("a glass ball makes caustics, carried by the ball") {
+        const EffectsPlan p = plan_effects(diffuse_room(true), room_camera, s);
+        CHECK(p.caustics.present);
+        CHECK(p.caustic_pass);
+        CHECK(p.caustic_objects == std::vector<std::uint32_t>{5});
+        CHECK(p.dropped.empty());
+        CHECK(p.photons_not_shot == 0);
+    }
+    SECTION("one plane: no indirect light, no global pass, nothing to gather") {
+        const auto scene = floor_scene([](auto&, auto) {});
+        const EffectsPlan p = plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), s);
+        CHECK(p.direct.present);
+        CHECK_FALSE(p.indirect.present);
+        CHECK_THAT(p.indirect.reason, Catch::Contains("object 0 (plane), flat"));
+        CHECK_FALSE(p.global_pass);
+        CHECK_FALSE(p.final_gather);
+        CHECK_FALSE(p.irradiance_cache);
+        CHECK_FALSE(p.precomputed_irradiance);
+        CHECK(p.photons_not_shot == s.global_photons + s.caustic_photons);
+        CHECK(p.passes_skipped.size() == 5);
+    }
+    SECTION("one ball lit from outside cannot light itself; lit from inside it can") {
+        DefaultScene<float> outside, inside;
+        for (auto* scene : {&outside, &inside}) {
+            const auto white = scene->add_material(Material<float>::lambertian(Rgb<float>(0.7f)));
+            scene->add(Sphere<float>({0, 0, 0}, 1.0f), white);
+        }
+        outside.add_light(PointLight<float>{.position = {0, 3, 0}, .power = Rgb<float>(10.0f)});
+        inside.add_light(PointLight<float>{.position = {0, 0.5f, 0}, .power = Rgb<float>(10.0f)});
+        outside.commit();
+        inside.commit();
+        CHECK_FALSE(plan_effects(outside, camera_at({0, 0, -4}, {0, 0, 0}), s).indirect.present);
+        // Seen from inside (from outside, the light inside it is hidden and nothing is lit).
+        CHECK(plan_effects(inside, camera_at({0, 0, -0.5f}, {0, 0, 0}), s).indirect.present);
+        CHECK_FALSE(plan_effects(inside, camera_at({0, 0, -4}, {0, 0, 0}), s).direct.present);
+    }
+    SECTION("a plane and a ball on it: light bounces between them") {
+        const auto scene = floor_scene([](auto& sc, auto white) { sc.add(Sphere<float>({0, 1, 0}, 1.0f), white); });
+        CHECK(plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), s).indirect.present);
+    }
+    SECTION("a light of zero power, and a cone light aimed away from everything, emit nothing") {
+        auto scene = floor_scene([](auto& sc, auto) {
+            sc.add_light(PointLight<float>{.position = {1, 3, 0}, .power = Rgb<float>(0.0f)});
+            sc.add_light(PointLight<float>{.position = {2, 3, 0}, .power = Rgb<float>(50.0f),
+                                           .cone = Cone<float>({0, 1, 0}, 30.0f)});  // up, away from the floor
+            sc.add_light(PointLight<float>{.position = {3, 3, 0}, .power = Rgb<float>(50.0f),
+                                           .cone = Cone<float>({1, 1, 0}, 46.0f)});  // grazes the floor's side
+        });
+        const EffectsPlan p = plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), s);
+        REQUIRE(p.lights.size() == 4);
+        CHECK(p.lights[0].emits);
+        CHECK_FALSE(p.lights[1].emits);
+        CHECK_THAT(p.lights[1].reason, Catch::Contains("no power"));
+        CHECK_FALSE(p.lights[2].emits);
+        CHECK_THAT(p.lights[2].reason, Catch::Contains("cone meets no object"));
+        CHECK(p.lights[3].emits);
+    }
+    SECTION("a light inside a closed box: silent when the camera is outside, not when inside") {
+        const auto scene = floor_scene([](auto& sc, auto white) {
+            sc.add(Box<float>({4, 0, 4}, {6, 2, 6}), white);
+            sc.add_light(PointLight<float>{.position = {5, 1, 5}, .power = Rgb<float>(500.0f)});
+        });
+        const EffectsPlan outside = plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), s);
+        CHECK(outside.lights[0].emits);
+        CHECK_FALSE(outside.lights[1].emits);
+        CHECK_THAT(outside.lights[1].reason, Catch::Contains("inside object 1 (box)"));
+        CHECK(outside.lights[0].global_photons == s.global_photons);
+        CHECK(outside.photons_moved > 0);
+        const EffectsPlan within = plan_effects(scene, camera_at({5, 1, 4.5f}, {5, 1, 6}), s);
+        CHECK(within.lights[1].emits);
+        RenderSettings forced = s;
+        forced.effects.lights = EffectSwitch::on;
+        CHECK(plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), forced).lights[1].emits);
+    }
+    SECTION("a glass box around the light lets its light out") {
+        const auto scene = floor_scene([](auto& sc, auto) {
+            const auto glass = sc.add_material(Material<float>::glass(1.5f));
+            sc.add(Box<float>({4, 0, 4}, {6, 2, 6}), glass);
+            sc.add_light(PointLight<float>{.position = {5, 1, 5}, .power = Rgb<float>(500.0f)});
+        });
+        CHECK(plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), s).lights[1].emits);
+    }
+    SECTION("rt, reference and sppm: path classes only, nothing dropped") {
+        for (const RenderMode m : {RenderMode::rt, RenderMode::reference, RenderMode::sppm}) {
+            const EffectsPlan p = plan_effects(diffuse_room(false), room_camera, small(m));
+            CHECK_FALSE(p.planned);
+            CHECK(p.dropped.empty());
+            CHECK(mentions(plan_lines(p, to_string(m)), "drops nothing"));
+        }
+    }
+}
+
+TEST_CASE("a pure-diffuse scene shoots no caustic photon and equals its render with caustics forced off", "[plan]") {
+    const auto scene = diffuse_room(false);
+    const RenderSettings s = small();
+    const RenderResult planned = render(scene, room_camera, s);
+    CHECK(planned.stats.caustic.emitted == 0);
+    CHECK(planned.stats.caustic.stored == 0);
+    CHECK(planned.stats.global.emitted == s.global_photons);
+    CHECK(planned.stats.plan.photons_not_shot == s.caustic_photons);
+    RenderSettings off = s;
+    off.effects = parse_effect_switches("caustics=off");
+    const RenderResult forced_off = render(scene, room_camera, off);
+    CHECK(identical(planned.film, forced_off.film));
+    CHECK(planned.film.all_finite_nonnegative());
+    CHECK(planned.film.mean().y > 0.01);
+}
+
+TEST_CASE("a one-plane scene runs no global pass and equals rt", "[plan]") {
+    const auto scene = floor_scene([](auto&, auto) {});
+    const auto cam = camera_at({0, 2, -4}, {0, 0, 0});
+    const RenderSettings s = small();
+    const RenderResult pm = render(scene, cam, s);
+    CHECK(pm.stats.global.emitted == 0);
+    CHECK(pm.stats.caustic.emitted == 0);
+    CHECK(pm.stats.rays.gather == 0);
+    CHECK(pm.stats.cache_records == 0);
+    CHECK(pm.stats.precompute_seconds == 0);
+    CHECK(pm.stats.plan.passes_skipped.size() == 5);
+    const RenderResult rt = render(scene, cam, small(RenderMode::rt));
+    CHECK(identical(pm.film, rt.film));
+    CHECK(rt.film.mean().y > 0.01);
+
+    SECTION("forced on, indirect light runs every pass and finds nothing to add") {
+        RenderSettings on = s;
+        on.effects.indirect = EffectSwitch::on;
+        const RenderResult forced = render(scene, cam, on);
+        CHECK(forced.stats.global.emitted == s.global_photons);
+        CHECK(forced.stats.rays.gather > 0);
+        CHECK(forced.stats.cache_records > 0);
+        CHECK(forced.film.mean().y == Approx(rt.film.mean().y).epsilon(0.01));
+    }
+}
+
+TEST_CASE("a light in a closed box elsewhere emits nothing and changes nothing", "[plan]") {
+    const auto box_only = [](auto& sc, auto white) { sc.add(Box<float>({4, 0, 4}, {6, 2, 6}), white); };
+    const auto with_light = floor_scene([&](auto& sc, auto white) {
+        box_only(sc, white);
+        sc.add_light(PointLight<float>{.position = {5, 1, 5}, .power = Rgb<float>(500.0f)});
+    });
+    const auto without = floor_scene(box_only);
+    const auto cam = camera_at({0, 2, -4}, {2, 0, 2});
+    const RenderSettings s = small();
+    const RenderResult planned = render(with_light, cam, s);
+    const RenderResult no_light = render(without, cam, s);
+    CHECK(planned.stats.plan.photons_moved > 0);
+    CHECK(planned.stats.global.stored == no_light.stats.global.stored);
+    CHECK(identical(planned.film, no_light.film));  // the boxed light's photons all went to the other
+    CHECK(planned.stats.rays.shadow == no_light.stats.rays.shadow);  // and it gets no shadow rays
+
+    SECTION("forced on, its photons land inside the box, which the camera cannot see") {
+        RenderSettings on = s;
+        on.effects.lights = EffectSwitch::on;
+        const RenderResult forced = render(with_light, cam, on);
+        CHECK(forced.stats.plan.photons_moved == 0);
+        CHECK(forced.stats.global.emitted == s.global_photons);
+        CHECK(forced.stats.rays.shadow > planned.stats.rays.shadow);
+        // Far more photons are stored (the box's bright inside), yet the image is the same
+        // within the noise of the fewer photons left to the visible light.
+        CHECK(forced.stats.global.stored > planned.stats.global.stored);
+        CHECK(forced.film.mean().y == Approx(planned.film.mean().y).epsilon(0.05));
+    }
+}
+
+TEST_CASE("a glass ball behind a wall behind the camera gets no caustic photons and changes nothing", "[plan]") {
+    // A floor, and a wall at z = -1 behind the camera, which looks along +z; the light is in front.
+    const auto walled = [](Vec3<float> ball) {
+        return floor_scene([ball](auto& sc, auto white) {
+            sc.add(Plane<float>({0, 0, 1}, -1.0f), white);
+            if (ball.z != 0) sc.add(Sphere<float>(ball, 0.5f), sc.add_material(Material<float>::glass(1.5f)));
+        });
+    };
+    const auto cam = camera_at({0, 1, 0}, {0, 0.5f, 3});
+    const RenderSettings s = small();
+    const auto behind = walled({0, 0.6f, -2});
+    const EffectsPlan p = plan_effects(behind, cam, s);
+    CHECK_FALSE(p.caustics.present);
+    CHECK_FALSE(p.caustic_pass);
+    CHECK(mentions(p.dropped, "caustic photons at object 2 (sphere): behind object 1 (plane)"));
+    CHECK(plan_effects(walled({0, 0.6f, 2}), cam, s).caustic_pass);  // in front of the wall: kept
+    const RenderResult planned = render(behind, cam, s);
+    CHECK(planned.stats.caustic.emitted == 0);
+    const RenderResult no_ball = render(walled({0, 0, 0}), cam, s);
+    CHECK(planned.stats.global.stored == no_ball.stats.global.stored);  // no photon reaches the ball
+    // Not bit-identical: the ball enlarges the scene's bounds, which scale the ray offsets.
+    CHECK(planned.film.mean().y == Approx(no_ball.film.mean().y).epsilon(0.005));
+    RenderSettings on = s;
+    on.effects.caustics = EffectSwitch::on;
+    const RenderResult forced = render(behind, cam, on);
+    CHECK(forced.stats.caustic.emitted == s.caustic_photons);
+    CHECK(forced.stats.caustic.stored == 0);  // every one of them ends on the wall's back
+    CHECK(identical(forced.film, planned.film));
+
+    SECTION("a light behind the wall emits nothing") {
+        const auto lamp = floor_scene([](auto& sc, auto white) {
+            sc.add(Plane<float>({0, 0, 1}, -1.0f), white);
+            sc.add_light(PointLight<float>{.position = {0, 2, -3}, .power = Rgb<float>(100.0f)});
+        });
+        const EffectsPlan lp = plan_effects(lamp, cam, s);
+        CHECK(lp.lights[0].emits);
+        CHECK_FALSE(lp.lights[1].emits);
+        CHECK_THAT(lp.lights[1].reason, Catch::Contains("behind object 1 (plane)"));
+    }
+}
+
+TEST_CASE("a forced-on effect equals the unplanned render; forced off, it is gone", "[plan]") {
+    const auto scene = diffuse_room(true);
+    const RenderSettings s = small();
+    const RenderResult planned = render(scene, room_camera, s);
+    CHECK(planned.stats.caustic.emitted == s.caustic_photons);
+    RenderSettings all_on = s;
+    all_on.effects = parse_effect_switches("caustics=on,indirect=on,lights=on");
+    const RenderResult unplanned = render(scene, room_camera, all_on);
+    // Nothing in this scene is dropped, so forcing everything on renders the same image.
+    CHECK(identical(planned.film, unplanned.film));
+
+    RenderSettings no_caustics = s;
+    no_caustics.effects.caustics = EffectSwitch::off;
+    const RenderResult off = render(scene, room_camera, no_caustics);
+    CHECK(off.stats.caustic.emitted == 0);
+    CHECK(off.stats.caustic.stored == 0);
+    CHECK(off.film.mean().y < planned.film.mean().y);  // the ball's caustic on the floor is gone
+    RenderSettings no_indirect = s;
+    no_indirect.effects.indirect = EffectSwitch::off;
+    const RenderResult dark = render(scene, room_camera, no_indirect);
+    CHECK(dark.stats.global.emitted == 0);
+    CHECK(dark.film.mean().y < 0.9 * planned.film.mean().y);  // a closed room's bounce light is gone
+}
