@@ -49,6 +49,7 @@ inline Numeric Parser::parse_and() {
     return a;
 }
 
+// RELATION: SUM {(< | <= | = | != | >= | >) SUM}, component by component on vectors | STRING_RELATION
 inline Numeric Parser::parse_relation() {
     // STRING_RELATION: STRING (< | <= | = | != | >= | >) STRING, compared as strcmp (POV-Ray's
     // Parse_Rel_String_Term): `#if (Name != "")`.
@@ -142,6 +143,7 @@ inline Numeric Parser::parse_unary() {
     return parse_postfix();
 }
 
+// POSTFIX: PRIMARY {. (x | y | z | t | u | v | red | green | blue | gray | grey | filter | transmit)}
 inline Numeric Parser::parse_postfix() {
     Numeric v = parse_primary();
     while (peek().is_symbol(".")) {
@@ -150,7 +152,9 @@ inline Numeric Parser::parse_postfix() {
         static const std::map<std::string, int, std::less<>> members = {
             {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
             {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
-        if (v.dim > 0 && (m.is_identifier("gray") || m.is_identifier("grey"))) {
+        if (m.is_identifier("gray") || m.is_identifier("grey")) {
+            if (v.dim == 0)
+                fail(dot.location, "expected a vector or colour before `." + m.text + "`, found " + describe(v));
             // POV-Ray's grey value of a colour (its GREY_SCALE weights).
             v = Numeric::scalar(0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2]);
             continue;

@@ -19,6 +19,7 @@ inline void Parser::add_primitives(Object& obj, std::size_t n, const SourceLocat
              "the scene is too large: more than " + std::to_string(options_.max_primitives) + " objects and triangles");
 }
 
+// OBJECT: SHAPE { PARAMS MODIFIERS } | union|merge|light_group { ... } | object { OBJECT_ID|OBJECT MODIFIERS }
 inline Object Parser::parse_object(const Token& kw) {
     const Nest nest(*this, kw.location);
     const std::string& w = kw.text;
