@@ -183,11 +183,15 @@ def main():
             for scene, r in zip(sample, pool.map(lambda s: render(photon, s, a.work, a.render_seconds), sample)):
                 results[scene].update(r)
     write_report(a, examples, scenes, results)
-    subset = [os.path.relpath(s, examples) for s in scenes if results[s]["code"] == 0]
-    with open(a.subset, "w") as f:
-        f.write("# POV-Ray 3.7 sample scenes that pass photon check (written by scripts/pov-corpus.py);\n"
-                "# tests/dsl/pov_corpus_test.sh checks that they still do.\n")
-        f.writelines(s + "\n" for s in subset)
+    write_subset(a.subset, examples, [s for s in scenes if results[s]["code"] == 0])
+
+
+def write_subset(path, examples, passed):
+    """The scenes that pass, each with the animation options it was checked with."""
+    with open(path, "w") as f:
+        f.write("# POV-Ray 3.7 sample scenes that pass photon check (written by scripts/pov-corpus.py), each\n"
+                "# with the options of its .ini's first frame; tests/dsl/pov_corpus_test.sh checks that they still do.\n")
+        f.writelines(" ".join([os.path.relpath(s, examples)] + animation_options(s)) + "\n" for s in passed)
 
 
 def write_report(a, examples, scenes, results):
