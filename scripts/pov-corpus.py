@@ -10,8 +10,11 @@ of scenes that pass (tests/dsl/pov_corpus_subset.txt, which the test suite re-ch
   scripts/pov-corpus.py build/photon [--render-seconds 60] [--jobs 2] [--no-render]
 
 Each scene is read from its own directory, as POV-Ray's sample scenes expect; the standard
-includes are found where photon finds them (/usr/share/povray-3.7/include). Uses only the
-standard library, so any python3 runs it.
+includes are found where photon finds them (/usr/share/povray-3.7/include). An animation scene
+is read as the first frame of its companion .ini file (the one in its directory that names it in
+Input_File_Name, else the one with its stem): its frame range, clock range and cyclic flag become
+photon's --frames and --clock-range, a Clock= value --clock. Uses only the standard library, so
+any python3 runs it.
 """
 import argparse
 import collections
@@ -73,8 +76,60 @@ def first_error(stderr):
     return "", (lines[-1] if lines else "no message")
 
 
+def read_ini(path):
+    """POV-Ray's animation options of an .ini file: {option: value} for the keys photon takes."""
+    keys = {"initial_frame": "KFI", "final_frame": "KFF", "initial_clock": "KI", "final_clock": "KF",
+            "clock": "K", "cyclic_animation": "KC", "input_file_name": "input"}
+    out = {}
+    for line in open(path, errors="replace"):
+        line = line.split(";", 1)[0].strip()
+        if "=" in line:
+            key, value = (x.strip() for x in line.split("=", 1))
+            if key.lower() in keys and value:
+                out[keys[key.lower()]] = value
+        for switch in line.split():  # +KFF10, +KI0, +KC, ... (longest prefix first)
+            m = re.match(r"^[+-](KFI|KFF|KC|KI|KF|K)(.*)$", switch, re.I)
+            if m:
+                opt = m.group(1).upper()
+                out[opt] = ("on" if switch[0] == "+" else "off") if opt == "KC" else m.group(2)
+    return out
+
+
+def companion_ini(scene):
+    """The .ini file that renders `scene`: the one naming it in Input_File_Name, else its stem's."""
+    folder, name = os.path.split(scene)
+    inis = sorted(f for f in os.listdir(folder) if f.lower().endswith(".ini"))
+    for f in inis:
+        if read_ini(os.path.join(folder, f)).get("input", "").lower() == name.lower():
+            return os.path.join(folder, f)
+    stem = os.path.splitext(name)[0].lower()
+    same = [f for f in inis if os.path.splitext(f)[0].lower() == stem]
+    return os.path.join(folder, same[0]) if same else None
+
+
+def animation_options(scene):
+    """photon's options for the first frame of the scene's companion .ini (none without one)."""
+    ini = companion_ini(scene)
+    if not ini:
+        return []
+    o = read_ini(ini)
+    try:
+        if "KFF" in o:
+            first, last = int(o.get("KFI", "1")), int(o["KFF"])
+            if o.get("KC", "off").lower() in ("on", "true", "yes", "1"):
+                last += 1  # POV-Ray's cyclic animation: one more frame, which it does not render
+            return ["--frames", "%d:%d" % (first, last),
+                    "--clock-range", "%s:%s" % (float(o.get("KI", "0")), float(o.get("KF", "1")))]
+        if "K" in o:
+            return ["--clock", str(float(o["K"]))]
+    except ValueError:  # an unfilled template (portfolio/__empty.ini)
+        pass
+    return []
+
+
 def check(photon, scene):
-    code, err, secs = run([photon, "check", os.path.basename(scene)], os.path.dirname(scene), 120)
+    code, err, secs = run([photon, "check", os.path.basename(scene)] + animation_options(scene),
+                          os.path.dirname(scene), 120)
     return {"code": code, "stderr": err, "check_seconds": secs}
 
 
@@ -82,7 +137,7 @@ def render(photon, scene, out_dir, seconds):
     name = os.path.splitext(os.path.basename(scene))[0]
     image = os.path.join(out_dir, name + ".png")
     cmd = [photon, "render", os.path.basename(scene), "-o", image, "--width", "160", "--height", "120",
-           "--threads", "1", "--no-stats", "-q"]
+           "--threads", "1", "--no-stats", "-q"] + animation_options(scene)
     code, err, secs = run(cmd, os.path.dirname(scene), seconds)
     return {"render_code": code, "render_stderr": err, "render_seconds": secs}
 
@@ -128,11 +183,15 @@ def main():
             for scene, r in zip(sample, pool.map(lambda s: render(photon, s, a.work, a.render_seconds), sample)):
                 results[scene].update(r)
     write_report(a, examples, scenes, results)
-    subset = [os.path.relpath(s, examples) for s in scenes if results[s]["code"] == 0]
-    with open(a.subset, "w") as f:
-        f.write("# POV-Ray 3.7 sample scenes that pass photon check (written by scripts/pov-corpus.py);\n"
-                "# tests/dsl/pov_corpus_test.sh checks that they still do.\n")
-        f.writelines(s + "\n" for s in subset)
+    write_subset(a.subset, examples, [s for s in scenes if results[s]["code"] == 0])
+
+
+def write_subset(path, examples, passed):
+    """The scenes that pass, each with the animation options it was checked with."""
+    with open(path, "w") as f:
+        f.write("# POV-Ray 3.7 sample scenes that pass photon check (written by scripts/pov-corpus.py), each\n"
+                "# with the options of its .ini's first frame; tests/dsl/pov_corpus_test.sh checks that they still do.\n")
+        f.writelines(" ".join([os.path.relpath(s, examples)] + animation_options(s)) + "\n" for s in passed)
 
 
 def write_report(a, examples, scenes, results):

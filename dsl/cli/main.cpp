@@ -27,6 +27,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -56,6 +57,8 @@ struct SceneOptions {
     std::string scene;
     std::vector<std::string> defines;
     std::vector<std::string> include_paths;
+    dsl::AnimationRequest animation;  // POV-Ray's +K, Initial_Frame/Final_Frame, Initial_Clock/Final_Clock
+    std::string frames, clock_range;
     bool strict = false;
     bool quiet = false;
     std::size_t warnings = 0;
@@ -73,6 +76,11 @@ struct SceneOptions {
         cmd.add_option("-I,--include-path", include_paths, "Also look for #include files in DIR (repeatable), before PHOTON_INCLUDE_PATH and POV-Ray's own include directory")
             ->allow_extra_args(false)
             ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+        // POV-Ray's animation options, for the scenes that read `clock` or `frame_number`.
+        cmd.add_option("--clock", animation.clock, "The scene's `clock` for a still image (POV-Ray's +K / Clock=); sets clock_on");
+        cmd.add_option("--frames", frames, "FIRST:LAST: the animation's frame range (POV-Ray's Initial_Frame/Final_Frame)");
+        cmd.add_option("--clock-range", clock_range, "FROM:TO: the clock at the first and last frame (POV-Ray's Initial_Clock/Final_Clock, default 0:1)");
+        cmd.add_option("--frame", animation.frame, "Read frame N of the animation (its `frame_number`; default the first frame of --frames)");
         cmd.add_flag("--strict", strict, "Treat warnings as errors (exit status 1)");
         cmd.add_flag("-q,--quiet", quiet, "Print errors only");
     }
@@ -109,7 +117,29 @@ struct SceneOptions {
             if (name.empty()) throw std::invalid_argument("--define " + d + ": expected NAME=NUMBER");
             o.defines[name] = value;
         }
+        o.animation = animation_clock();
         return o;
+    }
+
+    /// The identifiers clock, frame_number, ... from the animation options (POV-Ray's rules).
+    dsl::AnimationClock animation_clock() {
+        const auto pair = [](const std::string& text, const char* option) {
+            const auto colon = text.find(':');
+            try {
+                std::size_t a = 0, b = 0;
+                const double first = std::stod(text.substr(0, colon), &a);
+                const std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+                const double second = std::stod(rest, &b);
+                if (a != colon || b != rest.size()) throw std::invalid_argument("trailing characters");
+                return std::pair{first, second};
+            } catch (const std::exception&) {
+                throw std::invalid_argument(std::string(option) + " " + text + ": expected two numbers A:B");
+            }
+        };
+        dsl::AnimationRequest r = animation;
+        if (!frames.empty()) std::tie(r.initial_frame, r.final_frame) = pair(frames, "--frames");
+        if (!clock_range.empty()) std::tie(r.initial_clock, r.final_clock) = pair(clock_range, "--clock-range");
+        return dsl::animation_clock(r);
     }
 
     /// Exit status 1 under --strict when there were warnings.

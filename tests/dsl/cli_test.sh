@@ -102,6 +102,21 @@ expect 0 "$photon" check -D Size=2 -D Other=1 "$work/define.pov"
 expect 1 "$photon" check "$work/define.pov"
 grep -q "undefined identifier \`Size\`" "$work/err" || fail "-D missing not reported"
 
+# POV-Ray's animation options: an animation scene indexes its arrays by frame_number.
+printf '#declare R = array[3] { 1, 2, 3 }\ncamera { location -9 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nsphere { 0, R[frame_number - 1] }\n#if (clock = 0.5) box { 0, 1 } #end\n' >"$work/frames.pov"
+expect 1 "$photon" check "$work/frames.pov"
+grep -q "index -1 is out of the bounds of \`R\`" "$work/err" || fail "a still image's frame_number is not 0"
+expect 0 "$photon" check "$work/frames.pov" --frames 1:3
+grep -q "1: 1 sphere" "$work/out" || { fail "--frames: not one sphere"; cat "$work/out"; }
+expect 0 "$photon" check "$work/frames.pov" --frames 1:3 --frame 2
+grep -q "2: 1 box, 1 sphere" "$work/out" || { fail "--frame 2 of 1:3 is not clock 0.5"; cat "$work/out"; }
+expect 1 "$photon" check "$work/frames.pov" --frames 1:3 --frame 4
+grep -q "frame 4 is outside the frames 1 to 3" "$work/err" || fail "a frame outside the range not reported"
+expect 1 "$photon" check "$work/frames.pov" --frames 1:3 --clock 1
+expect 1 "$photon" check "$work/frames.pov" --frames 1-3
+grep -q "expected two numbers A:B" "$work/err" || fail "a bad --frames not reported"
+expect 0 "$photon" render "$work/frames.pov" -o "$work/frame3.png" $tiny --mode rt --frame 3 --frames 1:3 --clock-range 0:2
+
 expect 0 "$photon" export-pov "$scenes/recursive.pov" -o "$work/flat.pov"
 expect 0 "$photon" check "$work/flat.pov"
 grep -q "10: 7 box, 2 sphere, 1 transformed box" "$work/out" || fail "exported scene differs"

@@ -14,11 +14,13 @@ if [ ! -d "$examples" ]; then
 fi
 failed=0
 count=0
-while IFS= read -r scene; do
+# Each line: the scene, then the animation options of its .ini's first frame (--frames ...).
+while read -r scene options; do
   case "$scene" in ''|'#'*) continue ;; esac
   count=$((count + 1))
   dir=$(dirname "$examples/$scene")
-  if ! (cd "$dir" && "$photon" check -q "$(basename "$scene")" >/dev/null 2>"/tmp/pov_corpus_test.$$"); then
+  # shellcheck disable=SC2086 # the options are words
+  if ! (cd "$dir" && "$photon" check -q "$(basename "$scene")" $options >/dev/null 2>"/tmp/pov_corpus_test.$$"); then
     echo "FAIL: $scene"
     cat "/tmp/pov_corpus_test.$$"
     failed=$((failed + 1))

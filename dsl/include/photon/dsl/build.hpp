@@ -23,6 +23,7 @@
 #include "description.hpp"
 #include "diagnostics.hpp"
 #include "mesh_files.hpp"
+#include "physical_ranges.hpp"
 #include "settings_table.hpp"
 #include "value.hpp"
 
@@ -182,7 +183,6 @@ template <Scalar S>
                                                 const GlobalSettings& global, Warnings& warn,
                                                 const SourceLocation& object = {}) {
     const Finish& f = tex.finish;
-    const Color& pc = tex.pigment.color;
     const SourceLocation at = f.at.known() ? f.at : (tex.at.known() ? tex.at : object);
     auto item = [&](const char* k) {
         const auto it = f.written.find(k);
@@ -190,9 +190,9 @@ template <Scalar S>
     };
     const double ior = interior ? interior->ior : 1.0;
     const SourceLocation pigment_at = tex.pigment.at.known() ? tex.pigment.at : at;
-    if (pc.filter < 0 || pc.transmit < 0 || pc.filter + pc.transmit > 1 + 1e-9)
-        throw Error(pigment_at, "pigment filter and transmit must be >= 0 with a sum <= 1, found filter " +
-                                    format_number(pc.filter) + " and transmit " + format_number(pc.transmit));
+    const Clamped<Color> physical = physical_pigment(tex.pigment.color);
+    if (!physical.message.empty()) warn(pigment_at, physical.message, "approximated pigment", "pigment");
+    const Color& pc = physical.value;
     const double opacity = std::max(0.0, 1.0 - pc.filter - pc.transmit);
     Vector3 diffuse = f.diffuse * pc.rgb * opacity;
     Vector3 transmission = pc.filter * pc.rgb + Vector3(pc.transmit);
@@ -271,8 +271,10 @@ template <Scalar S>
     p.transmission = Rgb<S>(transmission);
     p.ior = S(ior);
     p.fresnel = fresnel;
+    const Clamped<double> phong_size = physical_phong_size(f.phong, f.phong_size);
+    if (!phong_size.message.empty()) warn(item("phong_size"), phong_size.message, "approximated finish", "phong_size");
     p.phong = S(f.phong);
-    p.phong_exponent = S(f.phong_size);
+    p.phong_exponent = S(phong_size.value);
     return p;
 }
 
@@ -512,7 +514,12 @@ private:
             return it != l.written.end() ? it->second : l.at;
         };
         const Vector3 position = t.point(l.position);
-        const Vector3 intensity = radiant_intensity(l, &warn_);
+        const Clamped<Vector3> physical = physical_light(radiant_intensity(l, &warn_), l.color.rgb);
+        if (!physical.message.empty()) {
+            warn_(l.at, physical.message, "approximated light", "light_source");
+            if (physical.value == Vector3(0.0)) return;
+        }
+        const Vector3 intensity = physical.value;
         try {
             std::optional<Cone<S>> cone;
             if (l.spotlight) {

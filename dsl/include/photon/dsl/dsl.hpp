@@ -10,6 +10,7 @@
 //   auto built = photon::dsl::build<float>(desc);
 //   auto result = photon::render(built.scene, built.camera, built.settings);
 
+#include "animation.hpp"
 #include "build.hpp"
 #include "description.hpp"
 #include "diagnostics.hpp"

@@ -90,9 +90,8 @@ private:
         if (c == '#') {
             advance();
             while (!at_end() && (peek_char() == ' ' || peek_char() == '\t')) advance();
-            if (at_end() || !is_ident_start(peek_char()))
-                throw Error(here(), "expected a directive name after `#`, found " + char_description());
-            t.kind = TokenKind::directive;
+            t.kind = TokenKind::directive;  // empty text: a `#` before no name, which the parser skips
+            if (at_end() || !is_ident_start(peek_char())) return t;
             t.text = lex_identifier();
             return t;
         }

@@ -92,13 +92,6 @@ struct IgnoredBlock {
 };
 
 struct UserFunction;  // user_function.hpp
-/// A block photon reads but does not evaluate (`#declare Map = color_map { ... }`, a `normal`,
-/// `media`, ...): declared so that the file reads on; using it where photon needs its content
-/// is an error at the use.
-struct SkippedBlock {
-    std::string keyword;
-    SourceLocation at;
-};
 
 struct Value;
 
@@ -121,7 +114,7 @@ struct Array {
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
                                CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
-                               SkippedBlock, BlendMap, IgnoredBlock>;
+                               BlendMap, IgnoredBlock>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -169,8 +162,6 @@ struct Value {
         case 12:
             return "a function";
         case 13:
-            return "a `" + std::get<SkippedBlock>(v).keyword + "` (read, not used by photon)";
-        case 14:
             return "a " + std::get<BlendMap>(v).keyword;
         default:
             return "a " + std::get<IgnoredBlock>(v).keyword;

@@ -60,7 +60,7 @@ inline void Parser::parse_array_initialiser(Array& a, std::size_t dim, std::size
         } else {
             const SourceLocation at = peek().location;
             bool needs_semicolon = false;
-            ValueData v = parse_rvalue("an element of the array", needs_semicolon);
+            ValueData v = parse_rvalue("an element of the array", needs_semicolon, true);
             set_element(a, next_index++, std::move(v), "an element", at);
         }
     }

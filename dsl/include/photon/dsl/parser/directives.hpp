@@ -10,6 +10,10 @@
 namespace photon::dsl::detail {
 
 inline void Parser::directive(const Token& d) {
+    if (d.text.empty()) {  // a `#` before no directive name: POV-Ray reads on as if it were not there
+        warn(d.location, "`#` without a directive name after it is ignored, as POV-Ray does");
+        return;
+    }
     // A directive's arguments may start another directive (`#undef #undef ...`, a `#while`
     // whose `#end` re-reads the condition); bounded like any nesting, so that no chain of
     // them can overflow the stack.
@@ -112,7 +116,8 @@ inline bool Parser::is_reserved(std::string_view w) const {
            one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
            one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, string_functions) ||
-           one_of(w, function_words) || one_of(w, skipped_declarable_blocks);
+           one_of(w, function_words) || one_of(w, blend_map_keywords) ||
+           one_of(w, ignored_declarable_blocks);
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -149,7 +154,7 @@ inline const Value* Parser::follow(const Value* v) const {
 }
 
 inline void Parser::directive_declare(const Token& d, bool local) {
-    const std::size_t home = files_.size();
+    const std::size_t home = files_.size(), depth = scopes_.size();
     Token id;
     {
         const ReadingName reading(*this);
@@ -172,7 +177,14 @@ inline void Parser::directive_declare(const Token& d, bool local) {
     declaring_ = id.text;  // a `function { }` knows its name, for messages and recursion
     ValueData v = parse_rvalue("the value of `" + id.text + "`", needs_semicolon);
     const bool semicolon_optional = !needs_semicolon || std::holds_alternative<std::string>(v);
-    assign(id, std::move(v), local);  // before the next token, which may use it (a macro call's argument)
+    // A macro called for the value may still be open (`#local M = Matrix_Trans(...)` has read
+    // the body's last token, `Q;` its `;` still to come): the value goes to the declaration's
+    // scopes, not to the macro's, so those are set aside while it is assigned.
+    std::vector<std::unordered_map<std::string, Value>> callee;
+    for (std::size_t i = depth; i < scopes_.size(); ++i) callee.push_back(std::move(scopes_[i]));
+    scopes_.resize(std::min(depth, scopes_.size()));
+    assign(id, std::move(v), local);
+    for (auto& scope : callee) scopes_.push_back(std::move(scope));  // before the next token, which may use it (a macro call's argument)
     // The next directive is not run from here (it runs after this one returns), so that a file
     // of declarations does not nest one directive inside the other.
     suppress_.push_back(home);
@@ -196,11 +208,24 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
         Texture tex = parse_texture(next(), default_texture_);
         // `#declare T = texture { } texture { }`: POV-Ray's layered texture; as on an object,
         // photon keeps the first (bottom) layer.
-        // Looking for a layer must not run the next directive (it may use this declaration).
+        // Looking for a layer must not run the next directive or call the next macro (either may
+        // use this declaration: screen.pov's `Screen_Plane(MyScreenTexture, ...)`); a token that is
+        // no layer is read again afterwards, when it runs.
         auto another_layer = [&] {
+            const bool fresh = !lookahead_;
+            const std::size_t frames = files_.size();
+            const Lexer::State before = files_.back().lexer.state();
             suppress_.push_back(files_.size());
-            const bool more = peek().is_identifier("texture");
+            bool more = false;
+            {
+                const ReadingName reading(*this);
+                more = peek().is_identifier("texture");
+            }
             suppress_.pop_back();
+            if (!more && fresh && files_.size() == frames) {
+                lookahead_.reset();
+                files_.back().lexer.restore(before);
+            }
             return more;
         };
         while (another_layer()) {
@@ -229,34 +254,27 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     // Maps photon averages (parser/patterns.hpp); the blocks it reads and ignores, kept so that
     // their use by name is known (the warning comes where they are used).
     if (one_of(w, blend_map_keywords)) return parse_blend_map(next());
-    if (one_of(w, {"fog", "rainbow", "sky_sphere", "media", "normal", "density"})) {
+    if (one_of(w, ignored_declarable_blocks)) {
         const Nest nest(*this, t.location);
         skip_block(next());
         return IgnoredBlock{w};
     }
-    if (const Value* v = lookup(w); v && std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data)) {
-        const ValueData f = v->data;
-        const Token name = next();  // `#declare G = F` copies the function, `F(...)` calls it
-        if (!peek().is_symbol("(")) return f;
-        pending_call_ = name;
+    const Value* v = lookup(w);
+    if (!v || std::holds_alternative<Numeric>(v->data)) return std::nullopt;
+    const ValueData value = v->data;  // next() may run a directive that changes it
+    const Token name = next();
+    if (std::holds_alternative<std::shared_ptr<const UserFunction>>(value) && peek().is_symbol("(")) {
+        pending_call_ = name;  // `F(...)` calls the function; `#declare G = F` copies it
         return std::nullopt;
     }
-    if (one_of(w, skipped_declarable_blocks)) {
-        const Token kw = next();
-        skip_block(kw);
-        warn(kw.location, "`" + w + "` is read but not used: photon does not evaluate it");
-        return SkippedBlock{w, kw.location};
-    }
-    if (const Value* v = lookup(w); v && !std::holds_alternative<Numeric>(v->data)) {
-        next();
-        return v->data;
-    }
-    return std::nullopt;
+    return value;
 }
 
 /// RVALUE: BLOCK | STRING | EXPRESSION — what `#declare NAME =` and a macro argument take.
-/// `needs_semicolon`: a string or an expression, which `#declare` ends with `;`.
-inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semicolon) {
+/// `needs_semicolon`: a string or an expression, which `#declare` ends with `;`. `sums_only`:
+/// the expression stops before a comparison, as POV-Ray's array elements do (Parse_Rel_Factor),
+/// so that `<1, 2>\n<3, 4>` is two elements.
+inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semicolon, bool sums_only) {
     const std::size_t home = files_.size();  // before the first token, which may call a macro
     const Token t = peek();
     if (auto block = parse_block_value(t)) {
@@ -267,7 +285,7 @@ inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semic
     if (!pending_call_ && starts_string(t)) return parse_string_expression(what);
     suppress_.push_back(home);
     const bool saved = in_vector_;
-    in_vector_ = false;
+    in_vector_ = sums_only;
     Numeric n = parse_expression_for(what);
     in_vector_ = saved;
     suppress_.pop_back();

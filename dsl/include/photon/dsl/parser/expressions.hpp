@@ -49,6 +49,7 @@ inline Numeric Parser::parse_and() {
     return a;
 }
 
+// RELATION: SUM {(< | <= | = | != | >= | >) SUM}, component by component on vectors | STRING_RELATION
 inline Numeric Parser::parse_relation() {
     // STRING_RELATION: STRING (< | <= | = | != | >= | >) STRING, compared as strcmp (POV-Ray's
     // Parse_Rel_String_Term): `#if (Name != "")`.
@@ -68,22 +69,15 @@ inline Numeric Parser::parse_relation() {
         if (!(t.kind == TokenKind::symbol && one_of(t.text, {"<", "<=", "=", "!=", ">=", ">"}))) break;
         const Token op = next();
         const Numeric b = parse_sum();
-        const double x = to_float(a, "a number to compare", op.location);
-        const double y = to_float(b, "a number to compare", op.location);
-        bool r = false;
-        if (op.text == "<")
-            r = x < y;
-        else if (op.text == "<=")
-            r = x <= y;
-        else if (op.text == "=")
-            r = x == y;
-        else if (op.text == "!=")
-            r = x != y;
-        else if (op.text == ">=")
-            r = x >= y;
-        else
-            r = x > y;
-        a = Numeric::scalar(r);
+        // Component by component on vectors, as POV-Ray's Parse_Rel_Term (a float is promoted).
+        const auto compare = [&](double x, double y) {
+            return op.text == "<" ? x < y : op.text == "<=" ? x <= y : op.text == "=" ? x == y
+                 : op.text == "!=" ? x != y : op.text == ">=" ? x >= y : x > y;
+        };
+        Numeric r;
+        r.dim = std::max(a.dim, b.dim);
+        for (int i = 0; i < std::max(r.dim, 1); ++i) r.c[std::size_t(i)] = compare(a.at(i), b.at(i)) ? 1.0 : 0.0;
+        a = r;
     }
     return a;
 }
@@ -149,6 +143,7 @@ inline Numeric Parser::parse_unary() {
     return parse_postfix();
 }
 
+// POSTFIX: PRIMARY {. (x | y | z | t | u | v | red | green | blue | gray | grey | filter | transmit)}
 inline Numeric Parser::parse_postfix() {
     Numeric v = parse_primary();
     while (peek().is_symbol(".")) {
@@ -157,9 +152,16 @@ inline Numeric Parser::parse_postfix() {
         static const std::map<std::string, int, std::less<>> members = {
             {"x", 0},   {"y", 1},     {"z", 2},    {"t", 3},      {"u", 0},       {"v", 1},
             {"red", 0}, {"green", 1}, {"blue", 2}, {"filter", 3}, {"transmit", 4}};
+        if (m.is_identifier("gray") || m.is_identifier("grey")) {
+            if (v.dim == 0)
+                fail(dot.location, "expected a vector or colour before `." + m.text + "`, found " + describe(v));
+            // POV-Ray's grey value of a colour (its GREY_SCALE weights).
+            v = Numeric::scalar(0.297 * v.c[0] + 0.589 * v.c[1] + 0.114 * v.c[2]);
+            continue;
+        }
         const auto it = m.kind == TokenKind::identifier ? members.find(m.text) : members.end();
         if (it == members.end())
-            fail_expected("a component (x, y, z, t, red, green, blue, filter, transmit) after `.`", m);
+            fail_expected("a component (x, y, z, t, red, green, blue, gray, filter, transmit) after `.`", m);
         if (v.dim == 0)
             fail(dot.location, "expected a vector or colour before `." + m.text + "`, found " + describe(v));
         if (it->second >= v.dim)
@@ -203,7 +205,8 @@ inline Numeric Parser::parse_primary() {
             if (!c.is_float()) fail(at, "expected a number as a component of the vector, found " + describe(c));
             if (v.dim == 5) fail(at, "a vector has at most 5 components");
             v.c[std::size_t(v.dim++)] = c.c[0];
-            if (accept_symbol(",")) continue;
+            // POV-Ray reads an optional comma after each component, so `<1, 2, 3,>` is a vector.
+            if (accept_symbol(",") && !peek().is_symbol(">")) continue;
             if (peek().is_symbol(">")) break;
             if (starts_expression(peek())) continue;  // POV-Ray's commas between components are optional
             fail_expected("`,` or `>` in the vector opened at " + position(t.location), peek());

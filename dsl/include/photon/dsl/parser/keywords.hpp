@@ -61,7 +61,7 @@ inline bool one_of(std::string_view w, Words list) { return std::find(list.begin
 
 inline constexpr std::string_view object_keywords[] = {"sphere", "box",   "plane",  "triangle",    "smooth_triangle",
                                                        "mesh",   "mesh2", "union", "merge",       "object",
-                                                       "light_source"};
+                                                       "light_source", "light_group"};
 inline constexpr std::string_view unsupported_objects[] = {
     "cylinder",      "cone",           "torus",      "disc",         "polygon",    "prism",         "sor",
     "lathe",         "superellipsoid", "blob",       "height_field", "isosurface", "julia_fractal", "parametric",
@@ -102,9 +102,9 @@ inline constexpr std::string_view spline_keywords[] = {"spline", "linear_spline"
 /// Arrays' keywords (parser/arrays.hpp); `dimensions` and `dimension_size` are functions.
 inline constexpr std::string_view array_keywords[] = {"array", "mixed", "dimensions", "dimension_size"};
 /// Blocks `#declare` reads (and skips) without evaluating them, so that the standard includes read on.
-inline constexpr std::string_view skipped_declarable_blocks[] = {
-    "normal",      "color_map",  "colour_map", "pigment_map", "normal_map", "texture_map", "slope_map",
-    "density_map", "density",    "media",      "fog",         "rainbow",    "sky_sphere"};
+/// Declarable blocks photon reads and ignores (their warning comes where they are used).
+inline constexpr std::string_view ignored_declarable_blocks[] = {"fog", "rainbow", "sky_sphere", "media", "normal",
+                                                                 "density"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",

@@ -94,9 +94,18 @@ inline Object Parser::parse_light(const Token& kw) {
         } else if (w == "looks_like") {
             const Nest nest(*this, t.location);
             open_block(t);
+            // looks_like { OBJECT | OBJECT_IDENTIFIER  MODIFIERS }
             const Token ok = next();
+            const Value* named = ok.kind == TokenKind::identifier ? lookup(ok.text) : nullptr;
+            if (named && std::holds_alternative<Object>(named->data)) {
+                Object shape = std::get<Object>(named->data);
+                parse_modifiers(t, shape);
+                close_block(t, "object modifiers");
+                light.looks_like = true;
+                continue;
+            }
             if (ok.kind != TokenKind::identifier || !is_object_keyword(ok.text))
-                fail_expected("an object in `looks_like`", ok);
+                fail_expected("an object or an object identifier in `looks_like`", ok);
             Object shape = parse_object(ok);
             parse_modifiers(t, shape);
             close_block(t, "object modifiers");

@@ -84,7 +84,9 @@ inline bool Parser::try_invoke_macro(const Token& t) {
     // caller's identifiers (POV-Ray's rule).
     std::unordered_map<std::string, Value> scope;
     for (std::size_t i = 0; i < m->params.size(); ++i) {
-        if (i > 0 && !accept_symbol(",")) {
+        // POV-Ray reads an optional comma after each argument (Parse_Comma), so `M(A -y)` is two.
+        if (i > 0 && !accept_symbol(",") &&
+            !(starts_expression(peek()) || peek().kind == TokenKind::identifier || peek().kind == TokenKind::string)) {
             if (peek().is_symbol(")") && std::all_of(m->optional.begin() + std::ptrdiff_t(i), m->optional.end(),
                                                      [](bool o) { return o; }))
                 break;

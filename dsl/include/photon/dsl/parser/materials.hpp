@@ -108,8 +108,8 @@ inline Finish Parser::parse_finish(const Token& kw, Finish f) {
             f.phong = parse_nonnegative("`phong`");
         } else if (w == "phong_size") {
             SourceLocation at;
-            f.phong_size = parse_float("`phong_size`", &at);
-            if (!(f.phong_size > 0)) fail(at, "`phong_size` must be positive, found " + format_number(f.phong_size));
+            f.phong_size = parse_float("`phong_size`", &at);  // <= 0 too, as POV-Ray (build.hpp says what photon uses)
+            if (!std::isfinite(f.phong_size)) fail(at, "`phong_size` must be finite, found " + format_number(f.phong_size));
         } else if (w == "metallic") {
             f.metallic = starts_expression(peek()) ? parse_float("`metallic`") : 1.0;
         } else if (w == "reflection") {

@@ -19,6 +19,7 @@ inline void Parser::add_primitives(Object& obj, std::size_t n, const SourceLocat
              "the scene is too large: more than " + std::to_string(options_.max_primitives) + " objects and triangles");
 }
 
+// OBJECT: SHAPE { PARAMS MODIFIERS } | union|merge|light_group { ... } | object { OBJECT_ID|OBJECT MODIFIERS }
 inline Object Parser::parse_object(const Token& kw) {
     const Nest nest(*this, kw.location);
     const std::string& w = kw.text;
@@ -60,6 +61,15 @@ inline Object Parser::parse_object(const Token& kw) {
             const Nest inner(*this, tk.location);
             open_block(tk);
             tris->push_back(parse_triangle_corners(tk).vertices);
+            if (peek().is_identifier("uv_vectors")) {  // uv_vectors UV, UV, UV: for uv_mapping textures
+                const Token uv = next();
+                for (int i = 0; i < 3; ++i) {
+                    if (i > 0) optional_comma();
+                    parse_vector("uv vector " + std::to_string(i + 1) + " of the triangle");
+                }
+                degrade(uv.location, degraded::ignored_effect, "uv_vectors",
+                        "`uv_vectors` are ignored: photon has no uv mapping");
+            }
             if (peek().is_identifier("texture")) {
                 const Token tt = next();
                 parse_texture(tt, default_texture_);
@@ -76,25 +86,43 @@ inline Object Parser::parse_object(const Token& kw) {
         obj.shape = MeshShape{std::move(tris), std::move(file)};
     } else if (w == "mesh2") {
         obj.shape = parse_mesh2(kw, obj);
-    } else if (w == "union" || w == "merge") {
+    } else if (w == "union" || w == "merge" || w == "light_group") {
+        // UNION: union|merge { {OBJECT} MODIFIERS }
+        // LIGHT_GROUP: light_group { {light_source | OBJECT | light_group | global_lights [BOOL]} MODIFIERS }
         UnionShape u;
         u.merge = w == "merge";
         if (u.merge)
             degrade(kw.location, degraded::approximated_object, w,
                     "`merge` is read as `union`: photon keeps the inner surfaces");
+        if (w == "light_group")
+            degrade(kw.location, degraded::approximated_light, w,
+                    "`light_group` is read as a union: photon does not keep light groups apart, so its lights "
+                    "light the whole scene and the scene's lights light its objects");
         obj.primitives = 0;
         for (;;) {
             const Token& t = peek();
+            if (w == "light_group" && t.is_identifier("global_lights")) {
+                next();
+                parse_optional_bool();
+                continue;
+            }
             if (t.kind != TokenKind::identifier || !is_object_keyword(t.text)) break;
             const Token ck = next();
             u.children.push_back(std::make_shared<const Object>(parse_object(ck)));
             add_primitives(obj, u.children.back()->primitives, ck.location);
         }
-        if (u.children.empty()) fail_expected("an object in `" + w + "`", peek());
+        if (u.children.empty())  // POV-Ray warns too ("Should have at least 2 objects in csg")
+            warn(kw.location, "`" + w + "` without objects adds nothing to the scene");
         obj.shape = std::move(u);
+        while (w == "light_group") {  // global_lights may come among the modifiers too
+            parse_modifiers(kw, obj);
+            if (!peek().is_identifier("global_lights")) break;
+            next();
+            parse_optional_bool();
+        }
     } else {  // object
         const Token t = peek();
-        if (t.kind == TokenKind::identifier && is_object_keyword(t.text) && t.text != "object") {
+        if (t.kind == TokenKind::identifier && is_object_keyword(t.text)) {  // object { object { ... } } too
             obj = parse_object(next());
         } else {
             const Value* v = t.kind == TokenKind::identifier ? lookup(t.text) : nullptr;

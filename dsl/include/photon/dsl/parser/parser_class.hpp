@@ -154,7 +154,7 @@ private:
     const Value* follow(const Value* v) const;
     void directive_declare(const Token& d, bool local);
     std::optional<ValueData> parse_block_value(const Token& t);
-    ValueData parse_rvalue(const std::string& what, bool& needs_semicolon);
+    ValueData parse_rvalue(const std::string& what, bool& needs_semicolon, bool sums_only = false);
     void assign(const Token& id, ValueData v, bool local);
     void store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at);
     void directive_undef();

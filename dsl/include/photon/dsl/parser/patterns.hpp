@@ -201,6 +201,11 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
             if (!type.is_identifier("df3")) fail_expected("`df3` after `density_file`", type);
             const Token file = next();
             if (file.kind != TokenKind::string) fail_expected("a file name in double quotes after `df3`", file);
+            // density_file df3 "file" [interpolate N]: N = 0 none, 1 trilinear, 2 tricubic
+            if (peek().is_identifier("interpolate")) {
+                next();
+                parse_integer("the interpolation type after `interpolate` (0, 1 or 2)", 0, 2);
+            }
         } else if (w == "slope" && peek().is_symbol("{")) {
             const Nest nest(*this, t.location);
             skip_block(t);
@@ -267,9 +272,10 @@ inline BlendMap Parser::parse_blend_map(const Token& kw) {
 // ENTRY: FLOAT [,] (COLOR | FLOAT, COLOR COLOR (old colour maps) | PIGMENT_BODY | TEXTURE_BODY | OTHER_BODY)
 inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
     const Nest nest(*this, open.location);
-    // An `average` pigment_map's weight may be left out (POV-Ray's teak_37.pov writes
-    // `[function { ... } color_map { ... }]`): it weighs 1 then.
-    const bool weightless = map.keyword == "pigment_map" && !starts_expression(peek());
+    // An `average` map's weight may be left out (POV-Ray's teak_37.pov writes `[function { ... }
+    // color_map { ... }]`, txtravg.pov `[pigment { ... } finish { ... }]`): it weighs 1 then.
+    const bool weightless =
+        one_of(map.keyword, {"pigment_map", "texture_map", "normal_map"}) && !starts_expression(peek());
     const double v = weightless ? 1.0 : parse_float("the value of the `" + map.keyword + "` entry");
     const bool comma = accept_symbol(",");
     if (map.keyword == "color_map") {
