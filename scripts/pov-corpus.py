@@ -224,15 +224,16 @@ def write_report(a, examples, scenes, results):
              "each scene that passes rendered at 160x120 (`photon render`, default mode, one thread, %g s limit)."
              % a.render_seconds))
     L.append("| | scenes | share |\n|---|---:|---:|")
-    row = lambda name, k: L.append("| %s | %d | %.0f%% |" % (name, k, 100.0 * k / n))
+    row = lambda name, k, of=n: L.append("| %s | %d | %.0f%% |" % (name, k, 100.0 * k / of))
     row("sample scenes", n)
     row("pass `photon check`", len(passed))
     row("pass with no warning", len(clean))
     if not a.no_render:
         if len(tried) < len(passed):
             L.append("| rendered: every %d-th scene that passes, %d scenes | %d | |" % (a.render_every, len(tried), len(tried)))
-        row("render at 160x120", len(rendered))
-        row("hit the render time limit", len(timed))
+        # shares of the scenes rendered, not of all: a sample's count says nothing of the rest
+        row("render at 160x120 (share of those rendered)", len(rendered), max(len(tried), 1))
+        row("hit the render time limit (share of those rendered)", len(timed), max(len(tried), 1))
     row("crash (must be 0)", len(crashed))
     L.append("")
     L.append("## Warnings by kind\n")
