@@ -269,7 +269,7 @@ TEST_CASE("photon's own warnings about what it renders differently carry a kind"
     }
 }
 
-TEST_CASE("mesh2 is read into a mesh; its normals and per-face textures are left out", "[dsl][degradation]") {
+TEST_CASE("mesh2 is read into a mesh: its normals and per-face textures are left out", "[dsl][degradation]") {
     const Built b = build_text(std::string(lit) +
                                "mesh2 {\n"
                                "  vertex_vectors { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 0> }\n"

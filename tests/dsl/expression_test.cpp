@@ -181,7 +181,7 @@ TEST_CASE("float built-ins POV-Ray 3.7 has beyond the basic ones", "[dsl][builti
     CHECK(error_of("#declare A = bitwise_and(1);") == "1:14: `bitwise_and` takes at least 2 arguments, found 1");
 }
 
-TEST_CASE("vector built-ins: vaxis_rotate; vturbulence is a clear error", "[dsl][builtins]") {
+TEST_CASE("vector built-ins: vaxis_rotate: vturbulence is a clear error", "[dsl][builtins]") {
     const auto a = vector_of("vaxis_rotate(<1, 0, 0>, <0, 0, 1>, 90)");
     CHECK(a.x == Approx(0).margin(1e-12));
     CHECK(a.y == Approx(1));

@@ -30,7 +30,7 @@ TEST_CASE("#write then #read gives back strings, floats and vectors, as in POV-R
     CHECK_FALSE(std::filesystem::exists(name));  // in memory only
 }
 
-TEST_CASE("#read in a loop until the file is undefined; #include of a written file", "[dsl][fileio]") {
+TEST_CASE("#read in a loop until the file is undefined: #include of a written file", "[dsl][fileio]") {
     const auto p = parse("#fopen F \"data.txt\" write\n"
                          "#write (F, 1, \",\", 2, \",\", 3)\n"
                          "#fclose F\n"

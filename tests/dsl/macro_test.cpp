@@ -71,7 +71,7 @@ Ball(Twice(1.5))
     CHECK(std::get<dsl::SphereShape>(p.desc.objects[1].shape).radius == 3);
 }
 
-TEST_CASE("#local in a macro is the call's own; #declare makes a global", "[dsl][macro]") {
+TEST_CASE("#local in a macro is the call's own: #declare makes a global", "[dsl][macro]") {
     CHECK(values(R"(
 #declare L = 1;
 #macro M() #local L = 100; #declare G = L + 1; #end
@@ -151,7 +151,7 @@ TEST_CASE("#switch: #case, #range, fall-through until #break, #else", "[dsl][swi
     CHECK_THAT(error_of("#switch (1) #case (1)\nsphere{0,1}"), Contains("expected `#end` to close the `#switch`"));
 }
 
-TEST_CASE("#for counts with a step, either way; #break leaves it", "[dsl][for]") {
+TEST_CASE("#for counts with a step, either way: #break leaves it", "[dsl][for]") {
     CHECK(values("#declare S = 0; #declare N = 0;\n#for (I, 1, 10, 3) #declare S = S + I; #declare N = N + 1; #end",
                  {"S", "N"}) == V{22, 4});
     CHECK(values("#declare S = 0;\n#for (I, 5, 1, -2) #declare S = S * 10 + I; #end", {"S"}) == V{531});
@@ -211,7 +211,7 @@ TEST_CASE("array errors: bounds, unset elements, types, sizes, with their locati
           "`M` called at test.pov:3:1)");
 }
 
-TEST_CASE("#undef removes identifiers and macros; defined() and #ifdef see macros without calling them",
+TEST_CASE("#undef removes identifiers and macros: defined() and #ifdef see macros without calling them",
           "[dsl][macro]") {
     CHECK(values("#macro M() 1 #end\n#declare D1 = defined(M);\n#undef M\n#declare D2 = defined(M);\n"
                  "#ifdef (M) #error \"still defined\" #end",
@@ -220,7 +220,7 @@ TEST_CASE("#undef removes identifiers and macros; defined() and #ifdef see macro
           "2:10: cannot #declare `M`: it is a macro (defined at 1:8); `#undef` it first");
 }
 
-TEST_CASE("#declare changes the identifier where it is visible, else makes a global; deprecated marks are read",
+TEST_CASE("#declare changes the identifier where it is visible, else makes a global: deprecated marks are read",
           "[dsl][macro]") {
     // Inside a macro, #declare of a parameter changes the parameter; of a new name, a global.
     CHECK(values("#macro M(P) #declare P = P * 2; #declare Out = P; #end\nM(21)", {"Out"}) == V{42});

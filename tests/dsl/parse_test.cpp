@@ -236,7 +236,7 @@ TEST_CASE("the camera follows POV-Ray's order: up/right, angle, look_at, transfo
     }
 }
 
-TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2); area lights become spheres", "[dsl][light]") {
+TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): area lights become spheres", "[dsl][light]") {
     std::vector<dsl::Diagnostic> w;
     SECTION("a point light with the fade rule") {
         const auto b = built(
@@ -438,7 +438,7 @@ TEST_CASE("transformations compose in the order written and fold into the shapes
     }
 }
 
-TEST_CASE("unions: textures apply to children without their own; transforms and options to all", "[dsl][union]") {
+TEST_CASE("unions: textures apply to children without their own: transforms and options to all", "[dsl][union]") {
     const auto b =
         built(std::string(stage) +
               "#declare Red = texture { pigment { rgb <0.75, 0.25, 0.25> } finish { ambient 0 diffuse 1 } }\n"

@@ -23,7 +23,7 @@ template <class S> DefaultScene<S> room_with(int inside) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("a camera inside an opaque sphere or a solid box sees black; inside glass it sees the room",
+TEMPLATE_TEST_CASE("a camera inside an opaque sphere or a solid box sees black: inside glass it sees the room",
                    "[hard][camera]", float, double) {
     using S = TestType;
     const auto camera = PinholeCamera<S>::look_at({0, 1, -2}, {0, 0.5, 0}, {0, 1, 0}, S(60), S(32.0 / 24.0));

@@ -86,7 +86,7 @@ TEMPLATE_TEST_CASE("a light exactly on a surface", "[hard][light]", float, doubl
     for (unsigned x = 0; x < r.film.width(); ++x) CHECK(r.film.at(x, r.film.height() - 1).x <= 1e-6 * wall);
 }
 
-TEMPLATE_TEST_CASE("a zero-radius sphere light is an error; a zero-power light is valid and black", "[hard][light]",
+TEMPLATE_TEST_CASE("a zero-radius sphere light is an error: a zero-power light is valid and black", "[hard][light]",
                    float, double) {
     using S = TestType;
     DefaultScene<S> empty;

@@ -8,6 +8,7 @@
 #include <photon/photon.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace photon;
@@ -27,7 +28,7 @@ Rgb<float> brute_force_irradiance(std::span<const Photon> photons, const Vec3<fl
         const float h = glm::dot(d, n);
         const float flat2 = glm::dot(d, d) + (s.flatten * s.flatten - 1.0f) * h * h;
         if (!(flat2 < s.max_radius * s.max_radius)) continue;
-        if (s.reject_backfacing && !(glm::dot(p.packed.incident_direction(), n) < 0.0f)) continue;
+        if (s.reject_backfacing && !p.packed.arrived_against(n)) continue;  // its own test below
         kept.push_back({flat2, glm::dot(d, d), p.packed.power()});
     }
     std::sort(kept.begin(), kept.end(), [](const Kept& a, const Kept& b) { return a.flat2 < b.flat2; });
@@ -44,6 +45,26 @@ Rgb<float> brute_force_irradiance(std::span<const Photon> photons, const Vec3<fl
 }
 
 }  // namespace
+
+TEST_CASE("front-facing: arrived onto the side n faces, on a surface within about 84 degrees of n", "[estimate]") {
+    const Vec3<float> n{0, 1, 0};
+    for (const float degrees : {0.0f, 30.0f, 60.0f, 80.0f}) {  // stored: the reversed normal of the side hit
+        const float a = degrees * pi<float> / 180.0f;
+        const PackedPhoton front(Rgb<float>(1.0f), {std::sin(a), -std::cos(a), 0.0f}, PathKind::direct);
+        const PackedPhoton back(Rgb<float>(1.0f), {std::sin(a), std::cos(a), 0.0f}, PathKind::direct);
+        INFO(degrees << " degrees");
+        CHECK(front.arrived_against(n));
+        CHECK(!back.arrived_against(n));
+    }
+    // A photon on a perpendicular face (a box's outer side, next to the edge of its inner top):
+    // its encoded normal is at 90 degrees give or take the encoding's error, and never counts.
+    Pcg32 rng(5, 1);
+    for (int i = 0; i < 1000; ++i) {
+        const float a = 2.0f * pi<float> * rng.uniform<float>();
+        const PackedPhoton side(Rgb<float>(1.0f), {std::cos(a), 0.0f, std::sin(a)}, PathKind::direct);
+        CHECK(!side.arrived_against(n));
+    }
+}
 
 TEST_CASE("the estimate uses exactly the k nearest front-facing photons in the flattened metric", "[estimate]") {
     // Photons on a floor and on a wall meeting it, arriving from both sides of each.

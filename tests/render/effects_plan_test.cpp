@@ -305,7 +305,7 @@ TEST_CASE("a glass ball behind a wall behind the camera gets no caustic photons 
     }
 }
 
-TEST_CASE("a forced-on effect equals the unplanned render; forced off, it is gone", "[plan]") {
+TEST_CASE("a forced-on effect equals the unplanned render: forced off, it is gone", "[plan]") {
     const auto scene = diffuse_room(true);
     const RenderSettings s = small();
     const RenderResult planned = render(scene, room_camera, s);

@@ -78,7 +78,7 @@ TEST_CASE("photon mapping adds indirect light to ray tracing, and its modes agre
     CHECK(pm_direct == Approx(pm).epsilon(0.05));
 }
 
-TEST_CASE("rt needs no photons; pm skips the caustic pass where nothing can make a caustic", "[render]") {
+TEST_CASE("rt needs no photons: pm skips the caustic pass where nothing can make a caustic", "[render]") {
     auto box = cornell::make_cornell_box<float>();
     const RenderResult rt = render(box.scene, box.camera, small(RenderMode::rt));
     CHECK(rt.stats.global.emitted == 0);

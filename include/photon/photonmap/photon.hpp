@@ -51,10 +51,14 @@ public:
     [[nodiscard]] Vec3<float> incident_direction() const noexcept {
         return decode_octahedral(std::uint16_t(bits_ >> 48));
     }
-    /// Whether the photon arrived travelling against `n` (onto the side `n` faces); no
-    /// normalisation, the sign is all the estimate's back-face test needs.
+    /// Whether the photon arrived travelling against `n` (onto the side `n` faces), on a surface
+    /// facing within about 84 degrees of `n`. The margin matters at an edge: a photon on the
+    /// perpendicular face has a stored normal at 90 degrees, whose 16-bit encoding gives a dot
+    /// product of either sign, so with a bare sign test half of the photons on a box's outer
+    /// faces lit the inside of its edges (a camera inside a solid box saw light). No
+    /// normalisation: the decoded vector's length is 0.58 to 1, so the bound is a cosine of 0.1 to 0.17.
     [[nodiscard]] bool arrived_against(const Vec3<float>& n) const noexcept {
-        return glm::dot(decode_octahedral_unnormalized(std::uint16_t(bits_ >> 48)), n) < 0.0f;
+        return glm::dot(decode_octahedral_unnormalized(std::uint16_t(bits_ >> 48)), n) < -0.1f;
     }
     [[nodiscard]] std::uint64_t bits() const noexcept { return bits_; }
 
