@@ -29,15 +29,6 @@ Built build_text(const std::string& text, dsl::ParseOptions po = {}) {
     return {std::move(desc), std::move(w), std::move(scene)};
 }
 
-/// The warnings of `kind`, as "line:column keyword".
-std::vector<std::string> places(const std::vector<dsl::Diagnostic>& ws, const std::string& kind) {
-    std::vector<std::string> out;
-    for (const auto& w : ws)
-        if (w.kind == kind)
-            out.push_back(std::to_string(w.location.line) + ":" + std::to_string(w.location.column) + " " + w.keyword);
-    return out;
-}
-
 /// The value of `expression` after the declarations in `prelude`.
 double number(const std::string& expression, dsl::ParseOptions po = {}, const std::string& prelude = "") {
     const Parsed p = parse(prelude + "#declare R = " + expression + ";\nsphere { 0, R }", po);

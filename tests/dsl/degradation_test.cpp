@@ -14,15 +14,6 @@ namespace {
 
 const char* const lit = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
 
-/// The warnings of `kind`, as "line:column keyword".
-std::vector<std::string> places(const std::vector<dsl::Diagnostic>& ws, const std::string& kind) {
-    std::vector<std::string> out;
-    for (const auto& w : ws)
-        if (w.kind == kind)
-            out.push_back(std::to_string(w.location.line) + ":" + std::to_string(w.location.column) + " " + w.keyword);
-    return out;
-}
-
 /// Parse and build, warnings of both steps collected.
 struct Built {
     dsl::SceneDescription desc;

@@ -40,6 +40,15 @@ inline std::string all_messages(const std::vector<dsl::Diagnostic>& ds) {
     return s;
 }
 
+/// The warnings of `kind`, as "line:column keyword".
+inline std::vector<std::string> places(const std::vector<dsl::Diagnostic>& ws, const std::string& kind) {
+    std::vector<std::string> out;
+    for (const auto& w : ws)
+        if (w.kind == kind)
+            out.push_back(std::to_string(w.location.line) + ":" + std::to_string(w.location.column) + " " + w.keyword);
+    return out;
+}
+
 /// The error a bad input raises, as "line:column: message" (empty when it parses and builds).
 inline std::string error_of(const std::string& text, dsl::ParseOptions options = {}) {
     try {

@@ -7,6 +7,8 @@
 
 #include <photon/photon.hpp>
 
+#include "film_compare.hpp"
+
 #include <algorithm>
 #include <cstring>
 
@@ -25,11 +27,6 @@ RenderSettings small(RenderMode mode = RenderMode::pm) {
     s.caustic_photons = 20'000;
     s.final_gather_rays = 16;
     return s;
-}
-
-bool identical(const Film& a, const Film& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0;
 }
 
 PinholeCamera<float> camera_at(Vec3<float> eye, Vec3<float> target) {

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include "../../examples/cornell_box.hpp"
+#include "film_compare.hpp"
 
 #include <cstring>
 
@@ -23,11 +24,6 @@ RenderSettings small(RenderMode mode) {
     s.caustic_photons = 50'000;
     s.final_gather_rays = 16;
     return s;
-}
-
-bool identical(const Film& a, const Film& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0;
 }
 
 }  // namespace
