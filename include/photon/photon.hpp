@@ -17,6 +17,9 @@
 
 #include "geometry/bbox.hpp"
 #include "geometry/box.hpp"
+#include "geometry/cone.hpp"
+#include "geometry/cylinder.hpp"
+#include "geometry/disc.hpp"
 #include "geometry/bvh.hpp"
 #include "geometry/hit.hpp"
 #include "geometry/offset.hpp"
@@ -24,6 +27,7 @@
 #include "geometry/primitive.hpp"
 #include "geometry/ray.hpp"
 #include "geometry/sphere.hpp"
+#include "geometry/torus.hpp"
 #include "geometry/transformed.hpp"
 #include "geometry/triangle.hpp"
 #include "geometry/triangle_mesh.hpp"

@@ -13,8 +13,12 @@
 
 #include "../geometry/bbox.hpp"
 #include "../geometry/box.hpp"
+#include "../geometry/cone.hpp"
+#include "../geometry/cylinder.hpp"
+#include "../geometry/disc.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/sphere.hpp"
+#include "../geometry/torus.hpp"
 #include "../geometry/transformed.hpp"
 #include "../geometry/triangle.hpp"
 #include "../geometry/triangle_mesh.hpp"
@@ -34,21 +38,27 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Box<S>>) return "box";
     else if constexpr (std::is_same_v<Shape, Triangle<S>>) return "triangle";
     else if constexpr (std::is_same_v<Shape, TriangleMesh<S>>) return "mesh";
+    else if constexpr (std::is_same_v<Shape, Cylinder<S>>) return shape.open() ? "open cylinder" : "cylinder";
+    else if constexpr (std::is_same_v<Shape, TruncatedCone<S>>) return shape.open() ? "open cone" : "cone";
+    else if constexpr (std::is_same_v<Shape, Disc<S>>) return "disc";
+    else if constexpr (std::is_same_v<Shape, Torus<S>>) return "torus";
     else return "object";
 }
 
-/// A plane or a triangle (also transformed: an affine map keeps it flat): no point of it sees
+/// A plane, a triangle or a disc (also transformed: an affine map keeps it flat): no point of it sees
 /// another, so light it reflects never lands on it again.
 template <class Shape> [[nodiscard]] constexpr bool is_flat(const Shape& shape) {
     using S = scalar_of<Shape>;
     if constexpr (is_transformed<Shape>::value) return is_flat(shape.shape());
-    else return std::is_same_v<Shape, Plane<S>> || std::is_same_v<Shape, Triangle<S>>;
+    else return std::is_same_v<Shape, Plane<S>> || std::is_same_v<Shape, Triangle<S>> || std::is_same_v<Shape, Disc<S>>;
 }
 
-/// A sphere or a box (also transformed: an affine map keeps it convex and closed).
-template <class Shape> [[nodiscard]] constexpr bool is_convex_solid(const Shape& shape) {
+/// A sphere, a box, a closed cylinder or a closed cone (also transformed: an affine map keeps it
+/// convex and closed). A torus is neither convex nor flat; an open cylinder or cone is not closed.
+template <class Shape> [[nodiscard]] bool is_convex_solid(const Shape& shape) {
     using S = scalar_of<Shape>;
     if constexpr (is_transformed<Shape>::value) return is_convex_solid(shape.shape());
+    else if constexpr (std::is_same_v<Shape, Cylinder<S>> || std::is_same_v<Shape, TruncatedCone<S>>) return !shape.open();
     else return std::is_same_v<Shape, Sphere<S>> || std::is_same_v<Shape, Box<S>>;
 }
 
