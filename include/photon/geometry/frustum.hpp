@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "hit.hpp"
 #include "quadric_support.hpp"
@@ -89,6 +91,34 @@ template <Scalar S> struct Frustum {
         }
         return hit;
     }
+};
+
+/// What Cylinder and TruncatedCone share: the checks of the two points, the accessors, bounds and
+/// intersection. Each shape checks its own radii before constructing it.
+template <Scalar S> class FrustumShape {
+public:
+    using scalar_type = S;
+
+    [[nodiscard]] const Vec3<S>& base() const noexcept { return f_.base; }
+    [[nodiscard]] Vec3<S> cap() const noexcept { return f_.base + f_.axis * f_.length; }
+    [[nodiscard]] const Vec3<S>& axis() const noexcept { return f_.axis; }
+    [[nodiscard]] S length() const noexcept { return f_.length; }
+    [[nodiscard]] bool open() const noexcept { return f_.open; }
+    [[nodiscard]] BBox<S> bounds() const noexcept { return f_.bounds(); }
+    [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept { return f_.intersect(ray); }
+
+protected:
+    /// Throws std::invalid_argument, naming `shape`, unless the points are finite and distinct.
+    FrustumShape(const char* shape, const Vec3<S>& base, const Vec3<S>& cap, S r_base, S r_cap, bool open) {
+        const S length = glm::length(cap - base);
+        if (!is_finite(base) || !is_finite(cap))
+            throw std::invalid_argument(std::string(shape) + ": base and cap points must be finite");
+        if (!(length > S(0)) || !std::isfinite(length))
+            throw std::invalid_argument(std::string(shape) + ": base and cap points must differ");
+        f_ = {base, (cap - base) / length, length, r_base, r_cap, open};
+    }
+
+    Frustum<S> f_;
 };
 
 }  // namespace photon::detail
