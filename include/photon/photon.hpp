@@ -17,10 +17,10 @@
 
 #include "geometry/bbox.hpp"
 #include "geometry/box.hpp"
+#include "geometry/bvh.hpp"
 #include "geometry/cone.hpp"
 #include "geometry/cylinder.hpp"
 #include "geometry/disc.hpp"
-#include "geometry/bvh.hpp"
 #include "geometry/hit.hpp"
 #include "geometry/offset.hpp"
 #include "geometry/plane.hpp"
