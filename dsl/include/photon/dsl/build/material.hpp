@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// POV-Ray's texture and interior as photon's material: the finish-to-reflectance rule.
+
+#include <algorithm>
+#include <string>
+
+#include <photon/material/material.hpp>
+
+#include "../description.hpp"
+#include "../physical_ranges.hpp"
+#include "../value.hpp"
+#include "warnings.hpp"
+
+namespace photon::dsl {
+
+/// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
+/// (1 - filter - transmit); transmission = filter * pigment + transmit; mirror reflectance from
+/// `reflection`; `reflection { 0, 1 fresnel on }` with `conserve_energy` makes Fresnel glass;
+/// phong and phong_size carry over. Finish items photon does not render are reported to `warn`,
+/// as is a surface reflecting more than it receives, which is scaled down to conserve energy
+/// (reported at its finish, or at `object` for a default texture, which was written nowhere).
+template <Scalar S>
+[[nodiscard]] MaterialParams<S> material_params(const Texture& tex, const Interior* interior,
+                                                const GlobalSettings& global, Warnings& warn,
+                                                const SourceLocation& object = {}) {
+    const Finish& f = tex.finish;
+    const SourceLocation at = f.at.known() ? f.at : (tex.at.known() ? tex.at : object);
+    auto item = [&](const char* k) {
+        const auto it = f.written.find(k);
+        return it != f.written.end() ? it->second : at;
+    };
+    const double ior = interior ? interior->ior : 1.0;
+    const SourceLocation pigment_at = tex.pigment.at.known() ? tex.pigment.at : at;
+    const Clamped<Color> physical = physical_pigment(tex.pigment.color);
+    if (!physical.message.empty()) warn(pigment_at, physical.message, "approximated pigment", "pigment");
+    const Color& pc = physical.value;
+    const double opacity = std::max(0.0, 1.0 - pc.filter - pc.transmit);
+    Vector3 diffuse = f.diffuse * pc.rgb * opacity;
+    Vector3 transmission = pc.filter * pc.rgb + Vector3(pc.transmit);
+    Vector3 specular(0.0);
+    bool fresnel = false;
+    if (f.reflection) {
+        const Reflection& r = *f.reflection;
+        if (r.fresnel && transmission != Vector3(0.0)) {
+            fresnel = true;
+            if (r.min != Vector3(0.0) || r.max != Vector3(1.0))
+                warn(r.at,
+                     "photon's Fresnel glass reflects F(angle, ior) exactly; the range of `reflection { min, max "
+                     "fresnel }` is read as { 0, 1 }");
+            if (!f.conserve_energy)
+                warn(r.at,
+                     "`fresnel on` without `conserve_energy`: POV-Ray adds the reflection on top of the transmitted "
+                     "light, photon takes it out of it (as with conserve_energy)");
+        } else if (r.fresnel) {
+            const double f0 = ((ior - 1) / (ior + 1)) * ((ior - 1) / (ior + 1));
+            specular = r.min + (r.max - r.min) * f0;
+            warn(r.at, "`fresnel` on an opaque surface: photon's mirror reflects F(0) = " + format_number(f0) +
+                           " at every angle (POV-Ray varies it with the angle)");
+        } else {
+            specular = r.max;
+            if (r.variable && r.min != r.max)
+                warn(r.at,
+                     "`reflection { min, max }` varies with the angle in POV-Ray; photon's mirror reflects the "
+                     "maximum at every angle");
+            if (f.conserve_energy) transmission *= Vector3(1.0) - specular;
+        }
+        if (r.falloff != 1 || r.exponent != 1 || r.metallic != 0)
+            warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon", "approximated finish", "reflection");
+    }
+    const Vector3 ambient = f.ambient * global.ambient_light;
+    if (ambient != Vector3(0.0))
+        warn(item("ambient"),
+             std::string(f.written.count("ambient") ? "`ambient`" : "POV-Ray's default `ambient 0.1`") +
+                 " is ignored: photon has no ambient light. Write `finish { ambient 0 }` or "
+                 "`global_settings { ambient_light 0 }`",
+             "approximated finish", "ambient");
+    if (f.brilliance != 1)
+        warn(item("brilliance"), "`brilliance " + format_number(f.brilliance) +
+                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)",
+             "approximated finish", "brilliance");
+    if (f.specular != 0)
+        warn(item("specular"),
+             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight", "approximated finish",
+             "specular");
+    if (f.emission != Vector3(0.0))
+        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon", "approximated finish", "emission");
+    if (f.diffuse_back != 0)
+        warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon", "approximated finish", "diffuse");
+    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon", "approximated finish", "metallic");
+    for (const char* k : {"irid", "crand"})
+        if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon", "approximated finish", k);
+
+    // POV-Ray renders a surface that reflects more than it receives; photon, which conserves
+    // energy, scales its reflectances down (keeping their hue) and says so.
+    constexpr const char* channel[] = {"red", "green", "blue"};
+    int worst = 0;
+    for (int c = 1; c < 3; ++c)
+        if (diffuse[c] + specular[c] + transmission[c] > diffuse[worst] + specular[worst] + transmission[worst]) worst = c;
+    const double sum = diffuse[worst] + specular[worst] + transmission[worst];
+    if (sum > 1 + 1e-9) {
+        warn(at,
+             std::string("the surface reflects more light than it receives: diffuse ") + format_number(diffuse[worst]) +
+                 " + reflection " + format_number(specular[worst]) + " + transmission " +
+                 format_number(transmission[worst]) + " = " + format_number(sum) + " > 1 in the " + channel[worst] +
+                 " channel; photon scales its reflectances by 1/" + format_number(sum) + " to conserve energy",
+             "approximated finish", "finish");
+        diffuse /= sum, specular /= sum, transmission /= sum;
+    }
+    MaterialParams<S> p;
+    p.diffuse = Rgb<S>(diffuse);
+    p.specular = Rgb<S>(specular);
+    p.transmission = Rgb<S>(transmission);
+    p.ior = S(ior);
+    p.fresnel = fresnel;
+    const Clamped<double> phong_size = physical_phong_size(f.phong, f.phong_size);
+    if (!phong_size.message.empty()) warn(item("phong_size"), phong_size.message, "approximated finish", "phong_size");
+    p.phong = S(f.phong);
+    p.phong_exponent = S(phong_size.value);
+    return p;
+}
+
+}  // namespace photon::dsl
