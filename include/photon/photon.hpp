@@ -61,6 +61,7 @@
 #include "integrator/direct_lighting.hpp"
 #include "integrator/effect_switches.hpp"
 #include "integrator/radiance.hpp"
+#include "integrator/reference_render.hpp"
 #include "integrator/render.hpp"
 #include "integrator/render_settings.hpp"
 #include "integrator/render_stats.hpp"
@@ -69,6 +70,7 @@
 #include "plan/plan_report.hpp"
 #include "plan/shape_facts.hpp"
 
+#include "film/error_estimate.hpp"
 #include "film/film.hpp"
 #include "film/tone_map.hpp"
 

@@ -15,6 +15,7 @@
 #include "memory_budget.hpp"
 #include "path_tracer.hpp"
 #include "radiance.hpp"
+#include "reference_render.hpp"
 #include "sppm.hpp"
 
 namespace photon {
@@ -22,6 +23,9 @@ namespace photon {
 struct RenderResult {
     Film film;
     RenderStats stats;
+    /// sppm and reference: each pixel's estimated error |A - B| / 2 from the two half-images
+    /// (film/error_estimate.hpp); empty when the render had no two halves or another mode.
+    Film error_image;
 };
 
 /// Which paths the global map must hold for `settings`: direct and caustic photons only when
@@ -175,9 +179,8 @@ template <class SceneT>
     using S = typename SceneT::scalar_type;
     const auto start = std::chrono::steady_clock::now();
     Film film(settings.width, settings.height);
+    if (settings.mode == RenderMode::reference) return render_reference(scene, camera, settings, stats);
     const RadianceIntegrator<SceneT> integrator(scene, maps, settings, lights_reaching);
-    const PathTracer<SceneT> path_tracer(scene, settings);
-    const bool reference = settings.mode == RenderMode::reference;
     const unsigned grid = settings.samples_per_pixel == 1 ? 1u : strata_per_axis(settings.samples_per_pixel);
     const unsigned spp = grid * grid;
     std::mutex merge;
@@ -194,14 +197,13 @@ template <class SceneT>
             for (unsigned x = 0; x < settings.width; ++x) {
                 const std::uint64_t pixel = std::uint64_t(y) * settings.width + x;
                 ctx.rng = Pcg32(settings.seed ^ 0x706978656c73ULL, pixel);
-                Rgb<double> sum(0.0);  // thousands of samples of a reference would drift in float
+                Rgb<double> sum(0.0);
                 for (unsigned s = 0; s < spp; ++s) {
                     const Vec2<S> jitter = spp == 1 ? Vec2<S>(S(0.5)) : stratified(s, grid, ctx.rng.uniform2<S>());
                     const S u = (S(x) + jitter.x) / S(settings.width);
                     const S v = (S(y) + jitter.y) / S(settings.height);
                     ++ctx.rays.camera;
-                    sum += Rgb<double>(reference ? path_tracer.radiance(camera.ray(u, v), ctx)
-                                                 : integrator.radiance(camera.ray(u, v), 1, ctx));
+                    sum += Rgb<double>(integrator.radiance(camera.ray(u, v), 1, ctx));
                 }
                 film.at(x, unsigned(y)) = Rgb<float>(sum / double(spp));
             }
@@ -235,7 +237,12 @@ template <class SceneT>
     if (settings.mode == RenderMode::reference)
         if (std::string blind = reference_blind_spot(scene); !blind.empty()) stats.warnings.push_back({std::move(blind)});
     if (settings.mode == RenderMode::sppm) {  // passes of its own (integrator/sppm.hpp)
-        result.film = render_sppm(scene, camera, settings, stats);
+        result.film = render_sppm(scene, camera, settings, stats, {}, &result.error_image);
+        stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return result;
+    }
+    if (settings.mode == RenderMode::reference) {  // no photon maps; rounds of its own (reference_render.hpp)
+        result.film = render_reference(scene, camera, settings, stats, &result.error_image);
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }

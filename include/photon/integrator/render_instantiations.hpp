@@ -24,7 +24,10 @@
     EXTERN template IrradianceCache build_irradiance_cache<DefaultScene<S>>(                                         \
         const DefaultScene<S>&, const PinholeCamera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
     EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,               \
-                                                      const RenderSettings&, RenderStats&, const SppmPassCallback&);
+                                                      const RenderSettings&, RenderStats&, const SppmPassCallback&,  \
+                                                      Film*);                                                        \
+    EXTERN template Film render_reference<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,          \
+                                                           const RenderSettings&, RenderStats&, Film*);
 
 #if defined(PHOTON_SEPARATE_COMPILATION) && PHOTON_SEPARATE_COMPILATION
 namespace photon {

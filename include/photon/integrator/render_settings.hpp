@@ -2,12 +2,14 @@
 #pragma once
 
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
 
 #include "../estimator/density_estimate.hpp"
+#include "../film/error_estimate.hpp"
 #include "../light/light.hpp"
 #include "effect_switches.hpp"
 
@@ -47,6 +49,15 @@ enum class RenderPhase { caustic_photons, global_photons, precompute, image, spp
     return "?";
 }
 
+/// What one pass of sppm, or one round of samples of reference, left: for progress lines and
+/// budgets.
+struct PassReport {
+    unsigned pass = 0;        ///< passes or rounds done
+    unsigned most = 0;        ///< the most there will be (the settings' or the budget's cap)
+    double seconds = 0;       ///< since the render started
+    ErrorEstimate error;      ///< of the image so far (not available after the first)
+};
+
 /// Everything a render needs besides the scene and the camera. Defaults give a clean 800x600
 /// Cornell box in well under a minute on two cores.
 struct RenderSettings {
@@ -85,6 +96,14 @@ struct RenderSettings {
     /// footprint at its first visible point (integrator/sppm.hpp).
     float sppm_initial_radius = 0.0f;
 
+    /// sppm and reference: a budget. Rendering stops after the pass (sppm) or round of
+    /// `samples_per_pixel` samples (reference) at which `time_limit` seconds have passed or the
+    /// estimated relative RMSE (film/error_estimate.hpp) is at most `target_error`, whichever comes
+    /// first; 0 leaves that limit out. sppm still does at most `sppm_passes` passes; reference
+    /// renders one round without a budget and as many as the budget takes with one.
+    double time_limit = 0;
+    double target_error = 0;
+
     /// Effects forced on or off against the light-path plan (effects_plan.hpp); all automatic:
     /// the plan decides.
     EffectSwitches effects{};
@@ -96,6 +115,9 @@ struct RenderSettings {
 
     /// Called from worker threads (serialised) with the phase and the fraction of it done.
     std::function<void(RenderPhase, double)> progress{};
+    /// sppm and reference: called after every pass or round with what it gave (serialised, on
+    /// the calling thread).
+    std::function<void(const PassReport&)> on_pass{};
     /// When set to true during a render, the current pass stops soon, later passes are skipped,
     /// and the result is marked partial (pixels not rendered are black).
     const std::atomic<bool>* cancel = nullptr;
@@ -137,6 +159,8 @@ inline void validate(const RenderSettings& s) {
     if (s.sppm_photons_per_pass == 0 || s.sppm_photons_per_pass > SettingsLimits::max_sppm_photons_per_pass)
         fail("sppm photons per pass must be from 1 to " + std::to_string(SettingsLimits::max_sppm_photons_per_pass) +
              ", found " + std::to_string(s.sppm_photons_per_pass));
+    if (!(s.time_limit >= 0) || !std::isfinite(s.time_limit)) fail("time limit must be finite and >= 0 (0: none)");
+    if (!(s.target_error >= 0) || !std::isfinite(s.target_error)) fail("target error must be finite and >= 0 (0: none)");
     if (!(s.sppm_initial_radius >= 0.0f) || !std::isfinite(s.sppm_initial_radius))
         fail("sppm initial radius must be finite and >= 0 (0: automatic)");
 }

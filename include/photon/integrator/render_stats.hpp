@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "../film/error_estimate.hpp"
+
 namespace photon {
 
 /// Rays traced in pass 2, by purpose.
@@ -70,6 +72,10 @@ struct RenderStats {
     /// it serves less well), one sentence each; the CLI prints them as "photon: warning: ...".
     std::vector<RenderWarning> warnings;
     PlanSavings plan;
+    /// sppm and reference: the image's estimated error, from two independent half-images.
+    ErrorEstimate error;
+    /// Why a progressive render stopped: "passes done", "time limit", "target error", "cancelled".
+    std::string stopped_by;
 };
 
 /// The statistics as an aligned plain-text table.
@@ -111,6 +117,9 @@ struct RenderStats {
             (unsigned long long)s.plan.photons_not_shot, (unsigned long long)s.plan.photons_moved,
             skipped.empty() ? "nothing" : skipped.c_str());
     }
+    if (s.error.available || s.mode == "sppm" || s.mode == "reference")
+        row("estimated error", "%s", format_error_estimate(s.error).c_str());
+    if (!s.stopped_by.empty()) row("stopped by", "%s", s.stopped_by.c_str());
     row("time", "precompute %.2f s, cache %.2f s, render %.2f s, total %.2f s", s.precompute_seconds,
         s.cache_seconds, s.render_seconds, s.total_seconds);
     return out;

@@ -14,12 +14,20 @@
 // Deterministic for any thread count: photons are traced in fixed blocks with one random stream
 // per photon and pass, concatenated in block order into a kd-tree; each pixel gathers from it in
 // the tree's order, summing in double, with its own stream per pass.
+//
+// The error estimate: even and odd passes feed two independent progressive states, two
+// half-images whose difference estimates the noise of their mean, the image
+// (film/error_estimate.hpp). The image is two independent sppm renders of half the passes each,
+// averaged: as noisy as one of all the passes, and its radii a little larger (the bias shrinks
+// as passes^-1/6, so half the passes leave it 12% larger).
 
+#include <array>
 #include <chrono>
 #include <functional>
 #include <mutex>
 #include <vector>
 
+#include "../film/error_estimate.hpp"
 #include "../film/film.hpp"
 #include "../light/light.hpp"
 #include "../parallel/parallel_for.hpp"
@@ -204,36 +212,73 @@ inline Film sppm_film(const std::vector<SppmPixel>& pixels, unsigned width, unsi
     return film;
 }
 
+/// The image of the two progressive states after `passes` passes (even passes in the first):
+/// their mean weighted by their passes, and its error estimate when both have one.
+struct SppmImage {
+    Film film;
+    ErrorEstimate error;
+    Film error_film;  ///< per-pixel |A - B| / 2, when both states have a pass
+};
+
+[[nodiscard]] inline SppmImage sppm_image(const std::array<std::vector<SppmPixel>, 2>& halves, unsigned width,
+                                          unsigned height, unsigned passes, bool with_error_film) {
+    const unsigned even = (passes + 1) / 2, odd = passes / 2;
+    SppmImage image;
+    if (odd == 0) {
+        image.film = sppm_film(halves[0], width, height, even);
+        return image;
+    }
+    const Film a = sppm_film(halves[0], width, height, even), b = sppm_film(halves[1], width, height, odd);
+    image.film = combine_halves(a, b, double(even), double(odd));
+    image.error = estimate_error(a, b);
+    if (with_error_film) image.error_film = error_image(a, b);
+    return image;
+}
+
 }  // namespace detail
 
-/// Renders by stochastic progressive photon mapping: settings.sppm_passes passes of one camera
-/// path per pixel and settings.sppm_photons_per_pass photons, reporting RenderPhase::sppm_pass
-/// after each; `on_pass`, if given, sees the image after every pass. Cancelling stops after the
-/// current pass (stats.partial). Fills stats.sppm, stats.rays and the times.
+/// Renders by stochastic progressive photon mapping: up to settings.sppm_passes passes of one
+/// camera path per pixel and settings.sppm_photons_per_pass photons, fewer when the budget
+/// (settings.time_limit, settings.target_error) is met first, reporting RenderPhase::sppm_pass and
+/// settings.on_pass after each; `on_pass`, if given, sees the image after every pass. Cancelling
+/// stops after the current pass (stats.partial). Fills stats.sppm, stats.error, stats.stopped_by,
+/// stats.rays and the times, and `*error_film` (if given) with the per-pixel error estimate.
 template <class SceneT>
 [[nodiscard]] Film render_sppm(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
-                               const RenderSettings& settings, RenderStats& stats, const SppmPassCallback& on_pass = {}) {
+                               const RenderSettings& settings, RenderStats& stats, const SppmPassCallback& on_pass = {},
+                               Film* error_film = nullptr) {
     using S = typename SceneT::scalar_type;
     validate(settings);
     const auto start = std::chrono::steady_clock::now();
     const unsigned width = settings.width, height = settings.height;
-    std::vector<SppmPixel> pixels(std::size_t(width) * height);
+    std::array<std::vector<SppmPixel>, 2> halves;  // even and odd passes' progressive states
+    for (auto& h : halves) h.resize(std::size_t(width) * height);
     const detail::SppmEmission<S> plan(scene.lights(), settings.sppm_photons_per_pass);
     const double footprint = double(pixel_angle(camera, width, height)) * sppm_radius_in_pixels;
     auto seconds_since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
+    stats.stopped_by = "passes done";
     unsigned pass = 0;
-    for (; pass < settings.sppm_passes; ++pass) {
+    double last_pass_seconds = 0;
+    while (pass < settings.sppm_passes) {
         if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
             stats.partial = true;
+            stats.stopped_by = "cancelled";
             break;
         }
-        const auto photons_start = std::chrono::steady_clock::now();
+        // Stop before a pass that would end past the time limit (after two: an image with an
+        // error estimate comes first).
+        if (settings.time_limit > 0 && pass >= 2 && seconds_since(start) + last_pass_seconds > settings.time_limit) {
+            stats.stopped_by = "time limit";
+            break;
+        }
+        const auto pass_start = std::chrono::steady_clock::now();
+        std::vector<SppmPixel>& pixels = halves[pass % 2];
         detail::SppmPhotonPass photons = detail::trace_sppm_photons(scene, plan, settings, pass);
         const KdTree<SppmPhoton> tree(std::span<const SppmPhoton>(photons.hits), {.threads = settings.threads});
         stats.sppm.photon_hits += photons.hits.size();
         stats.sppm.photon_rays += photons.rays;
         std::vector<SppmPhoton>().swap(photons.hits);
-        stats.sppm.photon_seconds += seconds_since(photons_start);
+        stats.sppm.photon_seconds += seconds_since(pass_start);
 
         const auto gather_start = std::chrono::steady_clock::now();
         const std::uint64_t camera_seed = detail::sppm_pass_seed(settings.seed, detail::sppm_camera_salt, pass);
@@ -244,9 +289,14 @@ template <class SceneT>
                 for (unsigned x = 0; x < width; ++x) {
                     const std::uint64_t index = std::uint64_t(y) * width + x;
                     SppmPixel& px = pixels[index];
+                    // Each half runs its own scrambled (0,2)-sequence over its own passes: one
+                    // sequence split by pass parity would put the halves' samples in different
+                    // parts of the pixel (its first bit is the parity), and their difference at
+                    // edges would read as noise.
                     Pcg32 scramble(settings.seed ^ detail::sppm_scramble_salt, index);
-                    const std::uint32_t sx = scramble.next_u32(), sy = scramble.next_u32();
-                    const Vec2<double> jitter = progressive_pixel_sample(pass, sx, sy);
+                    std::uint32_t sx = scramble.next_u32(), sy = scramble.next_u32();
+                    if (pass % 2 == 1) sx = scramble.next_u32(), sy = scramble.next_u32();
+                    const Vec2<double> jitter = progressive_pixel_sample(pass / 2, sx, sy);
                     ctx.rng = Pcg32(camera_seed, index);
                     ++ctx.rays.camera;
                     const Ray<S> ray = camera.ray(S((double(x) + jitter.x) / width), S((double(y) + jitter.y) / height));
@@ -269,17 +319,30 @@ template <class SceneT>
         });
         stats.sppm.gather_seconds += seconds_since(gather_start);
         stats.sppm.emitted += settings.sppm_photons_per_pass;
-        stats.sppm.passes = pass + 1;
-        if (settings.progress) settings.progress(RenderPhase::sppm_pass, double(pass + 1) / double(settings.sppm_passes));
-        if (on_pass) on_pass(pass + 1, detail::sppm_film(pixels, width, height, pass + 1));
+        stats.sppm.passes = ++pass;
+        last_pass_seconds = seconds_since(pass_start);
+        if (settings.progress) settings.progress(RenderPhase::sppm_pass, double(pass) / double(settings.sppm_passes));
+        const bool wants_error = settings.target_error > 0 || settings.on_pass;
+        if (!on_pass && !wants_error) continue;
+        const detail::SppmImage image = detail::sppm_image(halves, width, height, pass, false);
+        if (on_pass) on_pass(pass, image.film);
+        if (settings.on_pass) settings.on_pass({pass, settings.sppm_passes, seconds_since(start), image.error});
+        if (settings.target_error > 0 && image.error.available && image.error.relative_rmse <= settings.target_error) {
+            stats.stopped_by = "target error";
+            break;
+        }
     }
     double radius_sum = 0;
     std::size_t with_radius = 0;
-    for (const SppmPixel& px : pixels)
-        if (px.radius > 0) radius_sum += px.radius, ++with_radius;
+    for (const auto& h : halves)
+        for (const SppmPixel& px : h)
+            if (px.radius > 0) radius_sum += px.radius, ++with_radius;
     stats.sppm.mean_radius = with_radius ? radius_sum / double(with_radius) : 0.0;
+    detail::SppmImage image = detail::sppm_image(halves, width, height, pass, error_film != nullptr);
+    stats.error = image.error;
+    if (error_film) *error_film = std::move(image.error_film);
     stats.render_seconds = seconds_since(start);
-    return detail::sppm_film(pixels, width, height, pass);
+    return std::move(image.film);
 }
 
 }  // namespace photon

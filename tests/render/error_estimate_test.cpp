@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+// The error every sppm and reference render reports (film/error_estimate.hpp): the estimate from
+// two half-images against the true error, on the closed diffuse sphere whose radiance is known in
+// closed form (no judge noise), at three budgets per mode; the budgets (time limit, target error)
+// stop the render where they say; the half-image split keeps images deterministic.
+
+#include <catch2/catch.hpp>
+
+#include <photon/film/error_estimate.hpp>
+#include <photon/photon.hpp>
+
+#include <cmath>
+#include <vector>
+
+#include "film_compare.hpp"
+#include "transport/furnace_sphere.hpp"
+
+using namespace photon;
+
+namespace {
+
+using photon::testing::FurnaceSphere;
+
+/// The true normalised MSE of `film` against a uniform radiance `truth` (grey).
+double true_normalised_mse(const Film& film, double truth) {
+    double squared = 0;
+    for (const auto& p : film.pixels())
+        for (int c = 0; c < 3; ++c) squared += (double(p[c]) - truth) * (double(p[c]) - truth);
+    return squared / (3.0 * double(film.pixels().size()) * truth * truth);
+}
+
+RenderSettings furnace_settings(RenderMode mode) {
+    RenderSettings s;
+    s.mode = mode;
+    s.width = 24;
+    s.height = 24;
+    s.max_photon_depth = 200;
+    s.threads = 2;
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("estimate_error: halves with known noise give its variance, and equal halves give zero", "[error]") {
+    // A grey image of radiance 2 plus independent Gaussian noise of sigma 0.1 in each half: the
+    // mean's noise per channel is sigma^2 / 2, so its normalised MSE is 0.005 / 4 = 0.00125.
+    Pcg32 rng(7, 1);
+    auto gaussian = [&] {
+        const double u1 = std::max(1e-300, double(rng.uniform<double>())), u2 = rng.uniform<double>();
+        return std::sqrt(-2 * std::log(u1)) * std::cos(2 * pi<double> * u2);
+    };
+    Film a(200, 100), b(200, 100);
+    for (std::size_t i = 0; i < a.pixels().size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+            a.pixels()[i][c] = float(2 + 0.1 * gaussian());
+            b.pixels()[i][c] = float(2 + 0.1 * gaussian());
+        }
+    const ErrorEstimate e = estimate_error(a, b);
+    CHECK(e.available);
+    CHECK(e.normalised_mse == Approx(0.00125).epsilon(0.03));  // 60,000 draws: 0.6% standard error
+    CHECK(e.relative_rmse == Approx(std::sqrt(0.00125)).epsilon(0.02));
+    CHECK(e.blocks_counted == 64);
+    // A block's mean of 312 pixels x 3 channels: relative sd 0.1 / sqrt(2 * 936) / 2 = 0.00058.
+    CHECK(e.block_rms == Approx(0.1 / std::sqrt(2.0 * 936) / 2).epsilon(0.3));
+    const Film m = combine_halves(a, b);
+    CHECK(m.at(3, 4).x == Approx((a.at(3, 4).x + b.at(3, 4).x) / 2).epsilon(1e-6));
+    const Film err = error_image(a, b);
+    CHECK(err.at(5, 6).y == Approx(std::abs(a.at(5, 6).y - b.at(5, 6).y) / 2).epsilon(1e-6));
+
+    const ErrorEstimate none = estimate_error(a, a);
+    CHECK(none.normalised_mse == 0);
+    CHECK(none.worst_block == 0);
+    CHECK_THROWS_AS(estimate_error(a, Film(10, 10)), std::invalid_argument);
+}
+
+TEST_CASE("sppm's estimated error is within a factor of 2 of the true error at 4, 16 and 64 passes", "[error][sppm]") {
+    const FurnaceSphere f;
+    RenderSettings s = furnace_settings(RenderMode::sppm);
+    s.sppm_photons_per_pass = 4'000;
+    for (unsigned passes : {4u, 16u, 64u}) {
+        s.sppm_passes = passes;
+        const RenderResult r = render(f.scene, f.camera, s);
+        const double truth = true_normalised_mse(r.film, FurnaceSphere::radiance());
+        INFO(passes << " passes: estimated " << r.stats.error.normalised_mse << ", true " << truth);
+        REQUIRE(r.stats.error.available);
+        CHECK(r.stats.error.normalised_mse > truth / 2);
+        CHECK(r.stats.error.normalised_mse < truth * 2);
+        CHECK(r.error_image.width() == s.width);
+        CHECK(r.stats.stopped_by == "passes done");
+    }
+}
+
+TEST_CASE("reference's estimated error is within a factor of 2 of the true error at 4, 16 and 64 samples", "[error][reference]") {
+    const FurnaceSphere f;
+    RenderSettings s = furnace_settings(RenderMode::reference);
+    for (unsigned spp : {4u, 16u, 64u}) {
+        s.samples_per_pixel = spp;
+        const RenderResult r = render(f.scene, f.camera, s);
+        const double truth = true_normalised_mse(r.film, FurnaceSphere::radiance());
+        INFO(spp << " samples per pixel: estimated " << r.stats.error.normalised_mse << ", true " << truth);
+        REQUIRE(r.stats.error.available);
+        CHECK(r.stats.error.normalised_mse > truth / 2);
+        CHECK(r.stats.error.normalised_mse < truth * 2);
+    }
+    s.samples_per_pixel = 1;  // one sample in one round: no second half
+    const RenderResult one = render(f.scene, f.camera, s);
+    CHECK_FALSE(one.stats.error.available);
+    CHECK(one.error_image.pixels().empty());
+}
+
+TEST_CASE("a target error stops sppm and reference once the estimate meets it, a time limit once it is spent", "[error]") {
+    const FurnaceSphere f;
+    RenderSettings s = furnace_settings(RenderMode::sppm);
+    s.sppm_photons_per_pass = 4'000;
+    s.sppm_passes = 10'000;
+    s.target_error = 0.05;
+    std::vector<double> seen;
+    s.on_pass = [&](const PassReport& r) { seen.push_back(r.error.available ? r.error.relative_rmse : -1); };
+    const RenderResult sppm = render(f.scene, f.camera, s);
+    CHECK(sppm.stats.stopped_by == "target error");
+    CHECK(sppm.stats.error.relative_rmse <= 0.05);
+    REQUIRE(seen.size() == sppm.stats.sppm.passes);
+    CHECK(seen[seen.size() - 2] > 0.05);  // it stopped at the first pass that met the target
+    CHECK(sppm.stats.sppm.passes < 10'000);
+
+    s.mode = RenderMode::reference;
+    s.samples_per_pixel = 4;
+    s.target_error = 0.1;
+    const RenderResult ref = render(f.scene, f.camera, s);
+    CHECK(ref.stats.stopped_by == "target error");
+    CHECK(ref.stats.error.relative_rmse <= 0.1);
+
+    s.target_error = 0;
+    s.time_limit = 0.3;  // seconds: far fewer rounds than the cap
+    const RenderResult timed = render(f.scene, f.camera, s);
+    CHECK(timed.stats.stopped_by == "time limit");
+    CHECK(timed.stats.error.available);
+    CHECK(timed.film.all_finite_nonnegative());
+}
+
+TEST_CASE("the half-image split keeps sppm and reference deterministic on any thread count", "[error]") {
+    const FurnaceSphere f;
+    for (RenderMode mode : {RenderMode::sppm, RenderMode::reference}) {
+        RenderSettings s = furnace_settings(mode);
+        s.sppm_passes = 5;
+        s.sppm_photons_per_pass = 2'000;
+        s.threads = 1;
+        const RenderResult one = render(f.scene, f.camera, s);
+        s.threads = 2;
+        const RenderResult two = render(f.scene, f.camera, s);
+        CHECK(identical(one.film, two.film));
+        CHECK(identical(one.error_image, two.error_image));
+        CHECK(one.stats.error.normalised_mse == two.stats.error.normalised_mse);
+    }
+}
