@@ -157,6 +157,7 @@ struct RenderOptions {
     float exposure = 1.0f;
     bool no_stats = false;
     bool no_mis = false;
+    std::string error_image;  ///< sppm and reference: where to write the per-pixel error estimate
 };
 
 std::string vec(const photon::Vec3<float>& v) {
@@ -188,6 +189,8 @@ std::string settings_line(const photon::RenderSettings& s) {
           << ", radius " << s.caustic_estimate.max_radius << "), photon depth " << s.max_photon_depth
           << ", final gather " << s.final_gather_rays;
     if (s.mode == photon::RenderMode::reference && !s.reference_mis) o << ", no MIS";
+    if (s.time_limit > 0) o << ", time limit " << s.time_limit << " s";
+    if (s.target_error > 0) o << ", target error " << 100 * s.target_error << "%";
     o << ", seed " << s.seed;
     return o.str();
 }
@@ -324,6 +327,19 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     if (so.failed_strict()) return exit_error;
     photon::RenderSettings& settings = built.settings;
     if (ro.no_mis) settings.reference_mis = false;
+    const bool budget = settings.time_limit > 0 || settings.target_error > 0;
+    if (budget && settings.mode != photon::RenderMode::sppm && settings.mode != photon::RenderMode::reference)
+        std::cerr << "photon: warning: --time and --target-error apply to the sppm and reference modes; mode "
+                  << photon::to_string(settings.mode) << " renders once, as its settings ask\n";
+    // A budget without a pass count of its own decides when sppm stops.
+    if (budget && settings.mode == photon::RenderMode::sppm && !bo.overrides.count("sppm_passes") &&
+        !desc.settings.render.count("sppm_passes"))
+        settings.sppm_passes = photon::SettingsLimits::max_sppm_passes;
+    if (!ro.error_image.empty() && settings.mode != photon::RenderMode::sppm &&
+        settings.mode != photon::RenderMode::reference)
+        throw std::runtime_error("--error-image: only the sppm and reference modes estimate their error (mode " +
+                                 std::string(photon::to_string(settings.mode)) + ")");
+    if (!ro.error_image.empty()) photon::check_writable_image_path(ro.error_image);
     if (!so.quiet) {
         std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
                   << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "
@@ -336,12 +352,23 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
 
     Progress progress(!so.quiet);
     settings.progress = [&](photon::RenderPhase phase, double f) { progress(phase, f); };
-    if (settings.mode == photon::RenderMode::sppm && !so.quiet) {
-        // One line per pass: a pass is the unit the image improves by (and can be stopped after).
-        const auto start = Clock::now();
-        settings.progress = [start, passes = settings.sppm_passes](photon::RenderPhase, double f) {
-            const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-            std::fprintf(stderr, "photon: sppm pass %u/%u (%.1f s)\n", unsigned(std::lround(f * passes)), passes, elapsed);
+    const bool progressive = settings.mode == photon::RenderMode::sppm || (settings.mode == photon::RenderMode::reference && budget);
+    if (progressive && !so.quiet) {
+        // One line per pass (sppm) or round (reference): the unit the image improves by, and can
+        // be stopped after, with the image's estimated error.
+        settings.progress = {};
+        settings.on_pass = [sppm = settings.mode == photon::RenderMode::sppm,
+                            capped = !budget || bo.overrides.count("sppm_passes") || desc.settings.render.count("sppm_passes")](
+                               const photon::PassReport& r) {
+            char error[96] = "";
+            if (r.error.available)
+                std::snprintf(error, sizeof error, ", estimated error %.3g%% (worst block %.3g%%)", 100 * r.error.relative_rmse,
+                              100 * r.error.worst_block);
+            if (sppm && capped)
+                std::fprintf(stderr, "photon: sppm pass %u/%u (%.1f s)%s\n", r.pass, r.most, r.seconds, error);
+            else
+                std::fprintf(stderr, "photon: %s %u (%.1f s)%s\n", sppm ? "sppm pass" : "reference round", r.pass, r.seconds,
+                             error);
         };
     }
     settings.cancel = &cancel_requested;
@@ -371,6 +398,16 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
         written.replace_filename(output.stem().string() + ".partial" + output.extension().string());
     }
     photon::write_image(written, result.film, wo);
+    if (!ro.error_image.empty()) {
+        fs::path error_written = ro.error_image;
+        if (partial && fs::exists(error_written, ec))
+            error_written.replace_filename(error_written.stem().string() + ".partial" + error_written.extension().string());
+        if (result.error_image.pixels().empty())
+            std::cerr << "photon: warning: no error image: the render had no two independent halves (one pass, or one "
+                         "sample per pixel in one round)\n";
+        else
+            photon::write_image(error_written, result.error_image, wo);
+    }
     if (!so.quiet || partial) {
         std::cerr << "photon: wrote " << written.string()
                   << (partial ? " (PARTIAL: interrupted, marked photon:partial=true)" : "") << '\n';
@@ -476,6 +513,9 @@ int main(int argc, char** argv) {
     render->add_option("--exposure", ro.exposure, "Multiplies radiance before 8-bit output (PNG, JPEG)")
         ->check(CLI::PositiveNumber);
     render->add_flag("--no-stats", ro.no_stats, "Do not print the statistics table");
+    render->add_option("--error-image", ro.error_image,
+                       "sppm and reference: also write each pixel's estimated error |A - B| / 2 of the two "
+                       "independent half-images (an .exr keeps it linear)");
     render->add_flag("--no-mis", ro.no_mis,
                      "reference: direct light by shadow rays alone, without multiple importance sampling "
                      "(to measure what it gains)");

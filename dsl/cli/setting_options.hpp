@@ -13,6 +13,8 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdlib>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +34,10 @@ public:
                 option = cmd.add_option(flag, integers_[i], help);
             } else if (s.kind == dsl::SettingKind::real) {
                 option = cmd.add_option(flag, reals_[i], help);
+                if (s.units == "seconds")
+                    option->transform(CLI::AsNumberWithUnit(std::map<std::string, double>{{"s", 1}, {"m", 60}, {"h", 3600}}));
+                else if (s.units == "fraction")
+                    option->transform(CLI::Validator(percent_as_fraction, "NUMBER[%]"));
             } else if (s.kind == dsl::SettingKind::text) {
                 option = cmd.add_option(flag, names_[i], help);
             } else {
@@ -60,6 +66,17 @@ public:
     }
 
 private:
+    /// "1%" read as 0.01; a number without the sign as it is (CLI11 then reads it).
+    static std::string percent_as_fraction(std::string& value) {
+        if (value.empty() || value.back() != '%') return {};
+        const std::string number = value.substr(0, value.size() - 1);
+        char* end = nullptr;
+        const double x = std::strtod(number.c_str(), &end);
+        if (number.empty() || end != number.c_str() + number.size()) return "not a percentage: " + value;
+        value = std::to_string(x / 100);
+        return {};
+    }
+
     static constexpr std::size_t n = std::size(dsl::render_settings_table);
     std::array<std::optional<std::int64_t>, n> integers_{};
     std::array<std::optional<double>, n> reals_{};

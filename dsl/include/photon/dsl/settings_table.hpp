@@ -146,6 +146,8 @@ struct RenderSetting {
     bool lo_exclusive = false;      ///< a real must be above `lo`
     std::string_view noun;          ///< what messages call it ("samples per pixel")
     std::string_view help;          ///< for --help and the docs
+    /// A real the command line may also write with a unit: "seconds" (90s, 2m, 1h), "fraction" (1%).
+    std::string_view units;
     SettingField field{};
     /// A text setting: why a value is not one of it ("must be ..."), or nothing.
     std::optional<std::string> (*text_problem)(std::string_view) = nullptr;
@@ -241,6 +243,15 @@ inline constexpr RenderSetting render_settings_table[] = {
     {.key = "sppm_photons_per_pass", .keyword = "sppm_photons", .flag = "--photons-per-pass", .lo = 1,
      .hi = double(SettingsLimits::max_sppm_photons_per_pass), .noun = "sppm photons per pass",
      .help = "sppm: photons emitted per pass", .field = member<&RenderSettings::sppm_photons_per_pass>},
+    {.key = "time_limit", .keyword = "time_limit", .flag = "--time", .kind = SettingKind::real, .noun = "time limit",
+     .help = "sppm and reference: stop after the pass (sppm) or round of samples per pixel (reference) at which "
+             "this many seconds have passed (the command line also takes 90s, 2m, 1h; 0: no limit)",
+     .units = "seconds", .field = member<&RenderSettings::time_limit>},
+    {.key = "target_error", .keyword = "target_error", .flag = "--target-error", .kind = SettingKind::real,
+     .noun = "target error",
+     .help = "sppm and reference: stop once the estimated relative RMSE of the image is at most this (0.01, "
+             "or 1% on the command line; 0: no target)",
+     .units = "fraction", .field = member<&RenderSettings::target_error>},
     {.key = "effects", .keyword = "effects", .flag = "--effects", .kind = SettingKind::text, .noun = "effects",
      .help = "Effects forced on or off against the light-path plan, e.g. caustics=off,indirect=on "
              "(caustics, indirect: on, off or auto; lights=on: photons also from lights the plan finds "
