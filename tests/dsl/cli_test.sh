@@ -38,6 +38,23 @@ expect 0 "$photon" render "$scenes/room1.pov" -o "$work/room1.exr" $tiny --mode 
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/reference.exr" $tiny --mode reference
 grep -q "mode reference" "$work/out" || fail "--mode reference: not a reference render"
 grep -q "photon: warning:" "$work/err" && fail "--mode reference: a warning for a scene with a sphere light only"
+
+# Budgets and the error estimate (sppm and reference).
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --width 24 --height 18 --mode sppm \
+    --photons-per-pass 500 --target-error 20% --error-image "$work/budget-error.exr"
+grep -q "stopped by  *target error" "$work/out" || fail "--target-error 20%: not stopped by the target"
+grep -q "photon: sppm pass 2 (.*estimated error" "$work/err" || fail "--target-error: no pass line with the estimate"
+[ -s "$work/budget-error.exr" ] || fail "--error-image: not written"
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --width 24 --height 18 --mode reference \
+    --spp 4 --time 1s
+grep -q "stopped by  *time limit" "$work/out" || fail "--time 1s: not stopped by the time limit"
+grep -q "estimated error  *relative RMSE" "$work/out" || fail "--time: no estimated error"
+expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --time soon
+expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --target-error x%
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --target-error -1
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/nope.exr" $tiny --error-image "$work/nope-error.exr"
+grep -q "error-image: only the sppm and reference modes" "$work/err" || fail "--error-image in pm: no clear error"
+[ -e "$work/nope.exr" ] && fail "--error-image in pm: an image was written before the error"
 # A point light over glass: the reference cannot see its caustic and says so.
 printf 'camera { location <0,1,-2> look_at <0,0,0> }\nlight_source { <0,2,0>, rgb 1 }\nplane { y, 0 pigment { rgb 0.5 } }\nsphere { <0,0.5,0>, 0.3 pigment { rgbf 1 } finish { reflection { 0, 1 fresnel on } } interior { ior 1.5 } }\n' >"$work/point.pov"
 expect 0 "$photon" render "$work/point.pov" -o "$work/point.exr" $tiny --mode reference --no-mis
