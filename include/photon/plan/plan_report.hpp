@@ -3,6 +3,7 @@
 // The light-path plan as a few lines of text, for `photon check`, every render and embedders:
 // the path classes, the maps with their photons, the passes, and every dropped item's reason.
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,19 @@ namespace photon {
                       (lp.emits ? std::to_string(lp.global_photons) + " + " + std::to_string(lp.caustic_photons) : "none");
         }
         line("photons/light", shares + " (global + caustic)");
+    }
+    if (!plan.global_light_shares.empty()) {
+        std::size_t unseen = 0;
+        for (const LightPlan& lp : plan.lights) {
+            if (lp.visible_fraction < 0) continue;
+            unseen += lp.visible_fraction == 0 ? 1 : 0;
+        }
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "global photons by the power reaching what the camera sees (a pilot of %u photons per light; "
+                      "each light keeps %.0f%% of its share by power); %zu of %zu lights seen reaching nothing visible",
+                      plan.pilot.photons_per_light, 100.0 * plan.pilot.floor, unseen, plan.lights.size());
+        line("light shares", text);
     }
     std::string passes;
     auto pass = [&](bool runs, const char* name) {
