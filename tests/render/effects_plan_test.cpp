@@ -412,3 +412,71 @@ TEST_CASE("aimed caustic photons give the caustic of unaimed ones within noise, 
     const double sigma = std::sqrt(1.0 / double(aimed.photons) + 1.0 / double(unaimed.photons));
     CHECK(std::abs(aimed.power / unaimed.power - 1.0) < 4.0 * sigma);
 }
+
+TEST_CASE("a spotlight aims caustic photons only at the mirrors and glass its cone reaches", "[plan]") {
+    // A glass ball at x = 2 over the floor; light 0 above the origin (no cone), light 1 a
+    // spotlight at x = -2 pointing away from the ball, light 2 a spotlight pointing at it.
+    const auto scene = floor_scene([](auto& sc, auto) {
+        sc.add(Sphere<float>({2, 0.5f, 0}, 0.5f), sc.add_material(Material<float>::glass(1.5f)));
+        sc.add_light(PointLight<float>{.position = {-2, 2, 0}, .power = Rgb<float>(100.0f),
+                                       .cone = Cone<float>({-1, -1, 0}, 20.0f)});
+        sc.add_light(PointLight<float>{.position = {2, 3, 0}, .power = Rgb<float>(100.0f),
+                                       .cone = Cone<float>({0, -1, 0}, 20.0f)});
+    });
+    const auto cam = camera_at({0, 2, -4}, {0, 0, 0});
+    const RenderSettings s = small();
+    const auto aim = caustic_aim(scene);
+    CHECK(aim.cones[0].size() == 1);
+    CHECK(aim.cones[1].empty());
+    CHECK(aim.cones[2].size() == 1);
+    const EffectsPlan p = plan_effects(scene, cam, s);
+    CHECK(p.caustic_pass);
+    CHECK(p.lights[1].emits);  // it lights the floor
+    CHECK(p.lights[1].caustic_photons == 0);
+    CHECK(p.lights[0].caustic_photons + p.lights[2].caustic_photons == s.caustic_photons);
+    CHECK(mentions(p.dropped, "caustic photons from light 1 (point light at <-2, 2, 0>): its cone reaches no mirror or glass target"));
+    // Its photons went to the others: the caustic map is what it was, with less noise.
+    const RenderResult r = render(scene, cam, s);
+    CHECK(r.stats.caustic.emitted == s.caustic_photons);
+    CHECK(r.stats.caustic.stored > 0);
+    CHECK(r.film.all_finite_nonnegative());
+}
+
+TEST_CASE("the automatic estimate radius follows the photons' spacing and the scene's scale", "[plan][estimate]") {
+    // Photons on a jittered grid over a square of side L: density N / L^2, so k photons lie within
+    // sqrt(k L^2 / (pi N)) and the radius is about twice that.
+    const auto square = [](float side) {
+        std::vector<Photon> photons;
+        Pcg32 rng(7, 0);
+        const int n = 200;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const Vec2<float> u = rng.uniform2<float>();
+                photons.push_back({Vec3<float>((float(i) + u.x) / n * side, 0.0f, (float(j) + u.y) / n * side),
+                                   PackedPhoton(Rgb<float>(1.0f), {0, -1, 0}, PathKind::indirect)});
+            }
+        return PhotonMap(photons);
+    };
+    const float expected = 2.0f * std::sqrt(100.0f / (pi<float> * 40'000.0f));  // k = 100, side 1
+    const float metre = estimate_radius_from_density(square(1.0f), 100, -1.0f);
+    CHECK(metre == Approx(expected).epsilon(0.1));
+    CHECK(estimate_radius_from_density(square(1000.0f), 100, -1.0f) == Approx(1000.0f * metre).epsilon(1e-3));
+    CHECK(estimate_radius_from_density(square(0.001f), 100, -1.0f) == Approx(0.001f * metre).epsilon(1e-3));
+    // Four times the photons: half the radius.
+    CHECK(estimate_radius_from_density(square(1.0f), 25, -1.0f) == Approx(0.5f * metre).epsilon(0.1));
+    // Fewer photons than k: the caller's fallback.
+    CHECK(estimate_radius_from_density(PhotonMap(std::vector<Photon>(10, Photon{})), 100, 3.0f) == 3.0f);
+
+    // render() uses it where the settings say 0, and prints what it used.
+    const auto scene = diffuse_room(false);
+    RenderSettings s = small();
+    const RenderResult automatic = render(scene, room_camera, s);
+    CHECK(automatic.stats.global.radius_derived);
+    CHECK(automatic.stats.global.radius > 0.01f);
+    CHECK(automatic.stats.global.radius < 1.0f);
+    s.global_estimate.max_radius = 0.3f;
+    const RenderResult set = render(scene, room_camera, s);
+    CHECK_FALSE(set.stats.global.radius_derived);
+    CHECK(set.stats.global.radius == 0.3f);
+    CHECK_THAT(format_stats(automatic.stats), Catch::Contains("(from the photon density)"));
+}

@@ -394,8 +394,10 @@ template <class SceneT>
     using S = typename SceneT::scalar_type;
     EffectsPlan plan = plan_effects(scene, std::optional(camera.location()), settings);
     const auto lights = scene.lights();
-    if (!plan.planned || !plan.global_pass || lights.size() < 2 || settings.effects.lights == EffectSwitch::on) return plan;
     const std::vector<bool> emits = plan.light_emits();
+    if (!plan.planned || !plan.global_pass || std::count(emits.begin(), emits.end(), true) < 2 ||
+        settings.effects.lights == EffectSwitch::on)
+        return plan;
     plan.pilot.seed = settings.seed;
     const std::vector<double> fraction = visible_power_fractions(scene, camera, emits, settings.emission, plan.pilot);
     plan.global_light_shares = visible_power_shares<S>(lights, fraction, emits, plan.pilot.floor);
