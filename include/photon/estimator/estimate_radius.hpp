@@ -22,16 +22,27 @@ struct DensityRadiusRule {
     /// Photons sampled (evenly through the map's tree order, so the result does not depend on
     /// threads): their distances to their k-th nearest photon are the measurement.
     std::size_t samples = 1024;
-    /// The cap, in units of the median sampled distance: 2 lets a region 4 times sparser than
-    /// the median photon's still find k photons.
+    /// Which of the sampled distances (a quantile, 0.5: the median) the cap is measured on.
+    float quantile = 0.5f;
+    /// The cap, in units of that distance: 2 lets a region 4 times sparser still find k photons.
     float factor = 2.0f;
 };
 
+/// The global map's rule: twice the median spacing. Light on diffuse surfaces varies slowly, so
+/// the typical photon's spacing describes the map.
+inline constexpr DensityRadiusRule global_radius_rule{};
+/// The caustic map's rule: twice the spacing that 90% of its photons are within. A caustic packs
+/// most of its photons into a focus a thousand times denser than the broad, dim part of the same
+/// caustic around it (a glass ball's shadow), where the median photon's spacing left a few
+/// photons per estimate: a speckled disc.
+inline constexpr DensityRadiusRule caustic_radius_rule{.quantile = 0.9f};
+
 /// A photon map's spacing: the distance from a photon to its k-th nearest neighbour (itself
-/// counted), at the median of the sampled photons. Photon-weighted, so it describes where the
-/// photons (and the light) are rather than a few strays; 0 for a map with fewer than k photons
-/// or all of them at one point.
-[[nodiscard]] inline float median_kth_neighbor_distance(const PhotonMap& map, unsigned k, std::size_t samples = 1024) {
+/// counted), at `quantile` of the sampled photons (0.5: the median). Photon-weighted, so it
+/// describes where the photons (and the light) are rather than a few strays; 0 for a map with
+/// fewer than k photons or all of them at one point.
+[[nodiscard]] inline float kth_neighbor_distance(const PhotonMap& map, unsigned k, std::size_t samples = 1024,
+                                                 float quantile = 0.5f) {
     if (map.size() < std::max<std::size_t>(k, 2) || samples == 0) return 0.0f;
     const auto& box = map.bounds();
     const float reach = glm::length(box.extent()) * 1.001f + 1e-30f;  // every photon is within it
@@ -48,16 +59,18 @@ struct DensityRadiusRule {
         distances.push_back(std::sqrt(d2));
     }
     if (distances.empty()) return 0.0f;
-    const auto mid = distances.begin() + std::ptrdiff_t(distances.size() / 2);
-    std::nth_element(distances.begin(), mid, distances.end());
-    return *mid;
+    const auto at = std::size_t(std::clamp(quantile, 0.0f, 1.0f) * float(distances.size() - 1) + 0.5f);
+    const auto nth = distances.begin() + std::ptrdiff_t(at);
+    std::nth_element(distances.begin(), nth, distances.end());
+    return *nth;
 }
 
-/// The max radius for estimates of k photons from `map`: `rule.factor` times its median k-th
-/// neighbour distance. `fallback` when the map cannot say (fewer than k photons, or none apart).
+/// The max radius for estimates of k photons from `map`: `rule.factor` times its k-th neighbour
+/// distance at `rule.quantile`. `fallback` when the map cannot say (fewer than k photons, or
+/// none apart).
 [[nodiscard]] inline float estimate_radius_from_density(const PhotonMap& map, unsigned k, float fallback,
                                                         const DensityRadiusRule& rule = {}) {
-    const float d = median_kth_neighbor_distance(map, k, rule.samples);
+    const float d = kth_neighbor_distance(map, k, rule.samples, rule.quantile);
     return d > 0.0f && std::isfinite(d) ? rule.factor * d : fallback;
 }
 

@@ -29,14 +29,16 @@ struct PhotonMaps {
 
 namespace detail {
 /// The automatic radius for estimates of `k` photons from the first of `maps` holding photons.
-inline float automatic_radius(std::initializer_list<const std::optional<PhotonMap>*> maps, unsigned k) {
+inline float automatic_radius(std::initializer_list<const std::optional<PhotonMap>*> maps, unsigned k,
+                              const DensityRadiusRule& rule) {
     for (const auto* m : maps) {
         if (!*m || (*m)->empty()) continue;
         const PhotonMap& map = **m;
         // A map of fewer than k photons (or all at one point) has no spacing to measure: every
         // estimate then counts all of it, so the radius spans it.
         const float span = glm::length(map.bounds().extent());
-        return estimate_radius_from_density(map, k, span > 0.0f ? span : 1e-6f * (1.0f + max_component(glm::abs(map.bounds().min))));
+        return estimate_radius_from_density(map, k, span > 0.0f ? span : 1e-6f * (1.0f + max_component(glm::abs(map.bounds().min))),
+                                            rule);
     }
     return 0.0f;
 }
@@ -48,8 +50,8 @@ inline float automatic_radius(std::initializer_list<const std::optional<PhotonMa
 /// thousand k-nearest searches per map).
 inline void derive_estimate_radii(PhotonMaps& maps, const RenderSettings& settings) {
     const EstimateSettings &g = settings.global_estimate, &c = settings.caustic_estimate;
-    maps.global_radius = g.max_radius > 0.0f ? g.max_radius : detail::automatic_radius({&maps.global, &maps.unaimed_caustic}, g.k);
-    maps.caustic_radius = c.max_radius > 0.0f ? c.max_radius : detail::automatic_radius({&maps.caustic}, c.k);
+    maps.global_radius = g.max_radius > 0.0f ? g.max_radius : detail::automatic_radius({&maps.global, &maps.unaimed_caustic}, g.k, global_radius_rule);
+    maps.caustic_radius = c.max_radius > 0.0f ? c.max_radius : detail::automatic_radius({&maps.caustic}, c.k, caustic_radius_rule);
 }
 
 /// `settings` with the radii `maps` are read with in place of automatic (0) ones; maps whose
@@ -58,9 +60,9 @@ inline void derive_estimate_radii(PhotonMaps& maps, const RenderSettings& settin
     if (settings.global_estimate.max_radius > 0.0f && settings.caustic_estimate.max_radius > 0.0f) return settings;
     float g = maps.global_radius, c = maps.caustic_radius;
     if (!(g > 0.0f) && !(settings.global_estimate.max_radius > 0.0f))
-        g = detail::automatic_radius({&maps.global, &maps.unaimed_caustic}, settings.global_estimate.k);
+        g = detail::automatic_radius({&maps.global, &maps.unaimed_caustic}, settings.global_estimate.k, global_radius_rule);
     if (!(c > 0.0f) && !(settings.caustic_estimate.max_radius > 0.0f))
-        c = detail::automatic_radius({&maps.caustic}, settings.caustic_estimate.k);
+        c = detail::automatic_radius({&maps.caustic}, settings.caustic_estimate.k, caustic_radius_rule);
     if (!(settings.global_estimate.max_radius > 0.0f)) settings.global_estimate.max_radius = g;
     if (!(settings.caustic_estimate.max_radius > 0.0f)) settings.caustic_estimate.max_radius = c;
     return settings;

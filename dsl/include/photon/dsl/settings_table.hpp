@@ -202,8 +202,8 @@ inline constexpr RenderSetting render_settings_table[] = {
      .field = estimate_member<&RenderSettings::caustic_estimate, &EstimateSettings::k>},
     {.key = "caustic_estimate.max_radius", .keyword = "radius", .block = "caustic_estimate",
      .flag = "--caustic-radius", .kind = SettingKind::real, .noun = "the estimate radius",
-     .help = "Largest radius of a caustic estimate, scene units (0: twice the caustic map's median distance "
-             "from a photon to its k-th nearest)",
+     .help = "Largest radius of a caustic estimate, scene units (0: twice the distance within which 90% of "
+             "the caustic map's photons find their k nearest)",
      .field = estimate_member<&RenderSettings::caustic_estimate, &EstimateSettings::max_radius>},
     {.key = "caustic_estimate.flatten", .keyword = "flatten", .block = "caustic_estimate", .kind = SettingKind::real,
      .lo = 1, .noun = "`flatten`",
