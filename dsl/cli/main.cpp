@@ -175,6 +175,13 @@ std::string rgb(const photon::Rgb<float>& c) {
     return s.str();
 }
 
+/// An estimate's max radius as the settings line shows it: 0 is derived from the photon density.
+std::string radius_text(float r) {
+    std::ostringstream o;
+    if (r > 0) o << r; else o << "auto";
+    return o.str();
+}
+
 std::string settings_line(const photon::RenderSettings& s) {
     std::ostringstream o;
     o << s.width << " x " << s.height << ", mode " << photon::to_string(s.mode) << ", " << s.samples_per_pixel
@@ -185,8 +192,9 @@ std::string settings_line(const photon::RenderSettings& s) {
           << ", photon depth " << s.max_photon_depth;
     else if (s.mode != photon::RenderMode::rt)
         o << "; photons: " << s.global_photons << " global (k " << s.global_estimate.k << ", radius "
-          << s.global_estimate.max_radius << "), " << s.caustic_photons << " caustic (k " << s.caustic_estimate.k
-          << ", radius " << s.caustic_estimate.max_radius << "), photon depth " << s.max_photon_depth
+          << radius_text(s.global_estimate.max_radius) << "), " << s.caustic_photons << " caustic (k "
+          << s.caustic_estimate.k << ", radius " << radius_text(s.caustic_estimate.max_radius) << "), photon depth "
+          << s.max_photon_depth
           << ", final gather " << s.final_gather_rays;
     if (s.mode == photon::RenderMode::reference && !s.reference_mis) o << ", no MIS";
     if (s.time_limit > 0) o << ", time limit " << s.time_limit << " s";

@@ -94,8 +94,8 @@ expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --width 0
 grep -q "photon: error: --width: image width must be from 1 to 65536, found 0" "$work/err" || { fail "width bound"; cat "$work/err"; }
 expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --spp -1
 grep -q "photon: error: --spp: samples per pixel must be from 1 to 1000000, found -1" "$work/err" || { fail "negative spp"; cat "$work/err"; }
-expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --global-radius 0
-grep -q "photon: error: --global-radius: the estimate radius must be positive, found 0" "$work/err" || { fail "radius bound"; cat "$work/err"; }
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --global-radius -1
+grep -q "photon: error: --global-radius: the estimate radius must be >= 0, found -1" "$work/err" || { fail "radius bound"; cat "$work/err"; }
 expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --spp many
 
 printf 'light_source { <0, 5, 0>, rgb 1 }\nsphere { 0, 1 }\n' >"$work/warn.pov"

@@ -195,8 +195,8 @@ TEST_CASE("values out of range", "[dsl][errors]") {
     CHECK(error_of("plane { 0, 1 }") == "1:9: the normal of the plane must not be zero");
     CHECK(error_of("global_settings { max_trace_level 0 }\nsphere { 0, 1 }") ==
           "1:35: `max_trace_level` must be a whole number from 1 to 256, found 0");
-    CHECK(error_of("#ifdef (photon_version) global_settings { global_estimate { radius 0 } } #end\nsphere { 0, 1 }") ==
-          "1:68: the estimate radius must be positive, found 0");
+    CHECK(error_of("#ifdef (photon_version) global_settings { global_estimate { radius -1 } } #end\nsphere { 0, 1 }") ==
+          "1:68: the estimate radius must be >= 0, found -1");
 }
 
 TEST_CASE("directives used wrongly", "[dsl][errors]") {

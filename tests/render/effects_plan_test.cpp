@@ -325,3 +325,158 @@ TEST_CASE("a forced-on effect equals the unplanned render: forced off, it is gon
     CHECK(dark.stats.global.emitted == 0);
     CHECK(dark.film.mean().y < 0.9 * planned.film.mean().y);  // a closed room's bounce light is gone
 }
+
+TEST_CASE("the memory check budgets for the maps the plan builds, not those the settings ask for", "[plan][limits]") {
+    // One floor: the plan drops both photon passes, so 10^11 photons asked for allocate nothing.
+    const auto scene = floor_scene([](auto&, auto) {});
+    const auto cam = camera_at({0, 2, -4}, {0, 0, 0});
+    RenderSettings s = small();
+    s.global_photons = 100'000'000'000;
+    s.caustic_photons = 100'000'000'000;
+    s.memory_limit = std::uint64_t(1) << 30;
+    CHECK(estimate_memory(s, max_albedo(scene)).total() > double(s.memory_limit));
+    const RenderResult planned = render(scene, cam, s);
+    CHECK(planned.stats.global.emitted == 0);
+    CHECK(planned.film.mean().y > 0.01);
+    RenderSettings on = s;
+    on.effects.indirect = EffectSwitch::on;  // the global pass forced on: its photons count again
+    CHECK_THROWS_AS(render(scene, cam, on), MemoryLimitError);
+}
+
+TEST_CASE("global photons are shared by the power that reaches what the camera sees, with a floor", "[plan]") {
+    // A floor, a thick wall across it (a box: the plan cannot prove anything behind it hidden),
+    // light 0 in front of the wall, light 1 behind it; the camera looks at the front.
+    const auto scene = floor_scene([](auto& sc, auto white) {
+        sc.add(Box<float>({-20, 0, 2}, {20, 6, 2.3f}), white);
+        sc.add_light(PointLight<float>{.position = {0, 3, 5}, .power = Rgb<float>(100.0f)});
+    });
+    const auto cam = camera_at({0, 2, -4}, {0, 0, 0});
+    const RenderSettings s = small();
+    const EffectsPlan p = plan_effects(scene, cam, s);
+    REQUIRE(p.global_light_shares.size() == 2);
+    CHECK(p.lights[0].visible_fraction > 0.1);  // the part of the infinite floor in view
+    CHECK(p.lights[1].visible_fraction < 0.05);
+    CHECK(p.lights[1].emits);  // not silenced on a pilot's word
+    // Light 1 keeps at least the floor of its share by power (half the photons).
+    CHECK(p.lights[1].global_photons >= std::size_t(p.pilot.floor * 0.5 * double(s.global_photons)));
+    CHECK(p.lights[0].global_photons > 4 * p.lights[1].global_photons);
+    CHECK(p.lights[0].global_photons + p.lights[1].global_photons == s.global_photons);
+    CHECK(p.photons_moved > 0);
+    CHECK(mentions(plan_lines(p, "pm"), "global photons by the power reaching what the camera sees"));
+
+    // The render obeys it and, each photon carrying its own light's power, sees the same light as
+    // photon's old sharing by power (lights=on) within noise.
+    const RenderResult shared = render(scene, cam, s);
+    RenderSettings by_power = s;
+    by_power.effects.lights = EffectSwitch::on;
+    const EffectsPlan q = plan_effects(scene, cam, by_power);
+    CHECK(q.global_light_shares.empty());
+    CHECK(q.lights[0].global_photons == s.global_photons / 2);
+    const RenderResult old = render(scene, cam, by_power);
+    CHECK(shared.stats.global.emitted == old.stats.global.emitted);
+    CHECK(shared.stats.global.stored != old.stats.global.stored);
+    CHECK(shared.film.mean().y == Approx(old.film.mean().y).epsilon(0.02));
+}
+
+TEST_CASE("aimed caustic photons give the caustic of unaimed ones within noise, with far fewer shot", "[plan]") {
+    // A glass ball over a floor under a point light: its caustic is the bright spot below it.
+    const auto scene = floor_scene([](auto& sc, auto) {
+        sc.add(Sphere<float>({0, 1, 0}, 0.4f), sc.add_material(Material<float>::glass(1.5f)));
+    });
+    // Caustic power landing within 0.5 of the spot's centre, and the photons that carry it.
+    struct Spot {
+        double power = 0;
+        std::size_t photons = 0;
+    };
+    const auto spot = [](std::span<const Photon> photons) {
+        Spot s;
+        for (const Photon& p : photons) {
+            const Vec3<float> x = p.position;
+            if (p.packed.kind() != PathKind::caustic || x.x * x.x + x.z * x.z > 0.25f) continue;
+            s.power += double(p.packed.power().x);
+            ++s.photons;
+        }
+        return s;
+    };
+    const std::size_t aimed_count = 10'000, unaimed_count = 1'000'000;
+    const Spot aimed = spot(trace_caustic_photons(scene, {.photons = aimed_count, .max_depth = 100, .seed = 5}).photons);
+    const Spot unaimed = spot(trace_global_photons(scene, {.photons = unaimed_count, .max_depth = 100, .seed = 6}).photons);
+    INFO("aimed: " << aimed.photons << " photons, " << aimed.power << " W; unaimed: " << unaimed.photons << " photons, "
+                   << unaimed.power << " W");
+    REQUIRE(unaimed.photons > 1000);
+    // A hundred times fewer shot, and over twenty times as many land in the caustic per photon
+    // shot: the ball subtends about 1.5% of the light's sphere of directions.
+    CHECK(double(aimed.photons) / double(aimed_count) > 20.0 * double(unaimed.photons) / double(unaimed_count));
+    // Equal within 4 standard deviations of the two sums (photon counts' Poisson noise; the
+    // aimed photons' powers vary a little, by the cone mixture's overlap).
+    const double sigma = std::sqrt(1.0 / double(aimed.photons) + 1.0 / double(unaimed.photons));
+    CHECK(std::abs(aimed.power / unaimed.power - 1.0) < 4.0 * sigma);
+}
+
+TEST_CASE("a spotlight aims caustic photons only at the mirrors and glass its cone reaches", "[plan]") {
+    // A glass ball at x = 2 over the floor; light 0 above the origin (no cone), light 1 a
+    // spotlight at x = -2 pointing away from the ball, light 2 a spotlight pointing at it.
+    const auto scene = floor_scene([](auto& sc, auto) {
+        sc.add(Sphere<float>({2, 0.5f, 0}, 0.5f), sc.add_material(Material<float>::glass(1.5f)));
+        sc.add_light(PointLight<float>{.position = {-2, 2, 0}, .power = Rgb<float>(100.0f),
+                                       .cone = Cone<float>({-1, -1, 0}, 20.0f)});
+        sc.add_light(PointLight<float>{.position = {2, 3, 0}, .power = Rgb<float>(100.0f),
+                                       .cone = Cone<float>({0, -1, 0}, 20.0f)});
+    });
+    const auto cam = camera_at({0, 2, -4}, {0, 0, 0});
+    const RenderSettings s = small();
+    const auto aim = caustic_aim(scene);
+    CHECK(aim.cones[0].size() == 1);
+    CHECK(aim.cones[1].empty());
+    CHECK(aim.cones[2].size() == 1);
+    const EffectsPlan p = plan_effects(scene, cam, s);
+    CHECK(p.caustic_pass);
+    CHECK(p.lights[1].emits);  // it lights the floor
+    CHECK(p.lights[1].caustic_photons == 0);
+    CHECK(p.lights[0].caustic_photons + p.lights[2].caustic_photons == s.caustic_photons);
+    CHECK(mentions(p.dropped, "caustic photons from light 1 (point light at <-2, 2, 0>): its cone reaches no mirror or glass target"));
+    // Its photons went to the others: the caustic map is what it was, with less noise.
+    const RenderResult r = render(scene, cam, s);
+    CHECK(r.stats.caustic.emitted == s.caustic_photons);
+    CHECK(r.stats.caustic.stored > 0);
+    CHECK(r.film.all_finite_nonnegative());
+}
+
+TEST_CASE("the automatic estimate radius follows the photons' spacing and the scene's scale", "[plan][estimate]") {
+    // Photons on a jittered grid over a square of side L: density N / L^2, so k photons lie within
+    // sqrt(k L^2 / (pi N)) and the radius is about twice that.
+    const auto square = [](float side) {
+        std::vector<Photon> photons;
+        Pcg32 rng(7, 0);
+        const int n = 200;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < n; ++j) {
+                const Vec2<float> u = rng.uniform2<float>();
+                photons.push_back({Vec3<float>((float(i) + u.x) / n * side, 0.0f, (float(j) + u.y) / n * side),
+                                   PackedPhoton(Rgb<float>(1.0f), {0, -1, 0}, PathKind::indirect)});
+            }
+        return PhotonMap(photons);
+    };
+    const float expected = 2.0f * std::sqrt(100.0f / (pi<float> * 40'000.0f));  // k = 100, side 1
+    const float metre = estimate_radius_from_density(square(1.0f), 100, -1.0f);
+    CHECK(metre == Approx(expected).epsilon(0.1));
+    CHECK(estimate_radius_from_density(square(1000.0f), 100, -1.0f) == Approx(1000.0f * metre).epsilon(1e-3));
+    CHECK(estimate_radius_from_density(square(0.001f), 100, -1.0f) == Approx(0.001f * metre).epsilon(1e-3));
+    // Four times the photons: half the radius.
+    CHECK(estimate_radius_from_density(square(1.0f), 25, -1.0f) == Approx(0.5f * metre).epsilon(0.1));
+    // Fewer photons than k: the caller's fallback.
+    CHECK(estimate_radius_from_density(PhotonMap(std::vector<Photon>(10, Photon{})), 100, 3.0f) == 3.0f);
+
+    // render() uses it where the settings say 0, and prints what it used.
+    const auto scene = diffuse_room(false);
+    RenderSettings s = small();
+    const RenderResult automatic = render(scene, room_camera, s);
+    CHECK(automatic.stats.global.radius_derived);
+    CHECK(automatic.stats.global.radius > 0.01f);
+    CHECK(automatic.stats.global.radius < 1.0f);
+    s.global_estimate.max_radius = 0.3f;
+    const RenderResult set = render(scene, room_camera, s);
+    CHECK_FALSE(set.stats.global.radius_derived);
+    CHECK(set.stats.global.radius == 0.3f);
+    CHECK_THAT(format_stats(automatic.stats), Catch::Contains("(from the photon density)"));
+}

@@ -20,8 +20,8 @@ global_settings {
   render_mode pm
   global_photons 100000
   caustic_photons 200000
-  global_estimate { count 100 radius 0.25 }
-  caustic_estimate { count 60 radius 0.05 }
+  global_estimate { count 100 }
+  caustic_estimate { count 60 }
   final_gather 256
   shadow_samples 16
   samples_per_pixel 4

@@ -18,7 +18,7 @@ global_settings {
   render_mode pm
   global_photons 200000
   caustic_photons 0
-  global_estimate { count 100 radius 0.25 }
+  global_estimate { count 100 }
   final_gather 64
   shadow_samples 1      // one shadow ray per light: a hundred small lights are smooth enough
   samples_per_pixel 4

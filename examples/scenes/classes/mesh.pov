@@ -20,7 +20,7 @@ global_settings {
   render_mode pm
   global_photons 200000
   caustic_photons 0
-  global_estimate { count 100 radius 0.25 }
+  global_estimate { count 100 }
   final_gather 256
   shadow_samples 16
   samples_per_pixel 4

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Scene class "scale-mm": a scene 1 mm across (Scale = 0.001: the unit-sized scene scaled down). An open corner (floor, a white back wall, a
 // red left wall), a white ball and a sphere light, written in units of a 1 m scene and scaled
-// by Scale: every length, the light's radius and the photon search radii times Scale, the light's
-// intensity times Scale^2 (so that irradiance, and hence every pixel's radiance, is the same).
+// by Scale: every length and the light's radius times Scale, the light's intensity times Scale^2
+// (so that irradiance, and hence every pixel's radiance, is the same). The photon search radii
+// are not given: photon derives them from the photons' spacing, which scales with the scene.
 // scale-km.pov and scale-mm.pov differ only in Scale, so their images must match each other and a
 // 1 m version. Tests ray offsets, intersection tolerances and photon-map searches far from a
 // 1 m scale, in float.
@@ -22,7 +23,7 @@ global_settings {
   render_mode pm
   global_photons 200000
   caustic_photons 0
-  global_estimate { count 100 radius 0.1*Scale }
+  global_estimate { count 100 }
   final_gather 256
   shadow_samples 16
   samples_per_pixel 4

@@ -19,7 +19,7 @@ global_settings {
   render_mode pm
   global_photons 1000000  // at 400000, k = 100 photons span the corners: -3.9% there, -1.4% at 1 M
   caustic_photons 0
-  global_estimate { count 100 radius 0.15 }
+  global_estimate { count 100 }
   final_gather 256
   shadow_samples 16
   samples_per_pixel 4

@@ -43,16 +43,30 @@ inline constexpr double bytes_per_stored_photon = 3.0 * sizeof(Photon) + 8.0 + 2
     return (1.0 - std::pow(rho, double(max_depth))) / (1.0 - rho);
 }
 
-/// The estimate for `settings` in a scene whose materials reflect at most `max_albedo`.
-[[nodiscard]] inline MemoryEstimate estimate_memory(const RenderSettings& s, double max_albedo = 1.0) {
+/// The photon passes a render runs: the settings' counts, or fewer where the light-path plan
+/// drops a pass (EffectsPlan: global_photons, caustic_photons, precomputed_irradiance).
+struct PhotonPasses {
+    std::size_t global_photons = 0, caustic_photons = 0;
+    bool precomputed_irradiance = false;
+};
+
+/// The passes `s` asks for, before any plan.
+[[nodiscard]] inline PhotonPasses requested_passes(const RenderSettings& s) noexcept {
+    return {s.global_photons, s.caustic_photons, s.irradiance_stride > 0};
+}
+
+/// The estimate for `settings` running `passes` in a scene whose materials reflect at most
+/// `max_albedo`.
+[[nodiscard]] inline MemoryEstimate estimate_memory(const RenderSettings& s, double max_albedo, const PhotonPasses& passes) {
     MemoryEstimate m;
     const double pixels = double(s.width) * double(s.height);
     m.film = pixels * (sizeof(Rgb<float>) + 3.0 * sizeof(float));
     if (s.mode == RenderMode::pm || s.mode == RenderMode::pm_direct) {
         const double per_photon = stores_per_photon(max_albedo, s.max_photon_depth) * bytes_per_stored_photon;
-        const double irradiance = s.irradiance_stride > 0 ? 64.0 / double(s.irradiance_stride) : 0.0;
-        m.photon_maps = (double(s.global_photons) + double(s.caustic_photons)) * per_photon +
-                        double(s.global_photons) * irradiance;
+        const double irradiance =
+            passes.precomputed_irradiance && s.irradiance_stride > 0 ? 64.0 / double(s.irradiance_stride) : 0.0;
+        m.photon_maps = (double(passes.global_photons) + double(passes.caustic_photons)) * per_photon +
+                        double(passes.global_photons) * irradiance;
     }
     if (s.mode == RenderMode::sppm) {
         // Per pixel: its statistics (SppmPixel, 64 bytes). Per photon hit of one pass: the traced
@@ -62,6 +76,11 @@ inline constexpr double bytes_per_stored_photon = 3.0 * sizeof(Photon) + 8.0 + 2
         m.photon_maps = double(s.sppm_photons_per_pass) * stores_per_photon(max_albedo, s.max_photon_depth) * per_hit;
     }
     return m;
+}
+
+/// The estimate for every pass `s` asks for.
+[[nodiscard]] inline MemoryEstimate estimate_memory(const RenderSettings& s, double max_albedo = 1.0) {
+    return estimate_memory(s, max_albedo, requested_passes(s));
 }
 
 /// Bytes the system can give without swapping: MemAvailable from /proc/meminfo (Linux), else the

@@ -9,27 +9,15 @@
 #include <optional>
 #include <vector>
 
-#include "../estimator/irradiance_cache.hpp"
-#include "../estimator/precomputed_irradiance.hpp"
 #include "../geometry/offset.hpp"
 #include "../material/scatter.hpp"
 #include "../math/frame.hpp"
 #include "boundary_probe.hpp"
 #include "direct_lighting.hpp"
+#include "photon_maps.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
-
-/// The photon maps pass 2 reads, and what is derived from them: irradiance precomputed from the
-/// global map and the irradiance cache of final gathers. Any may be absent.
-struct PhotonMaps {
-    std::optional<PhotonMap> global, caustic;
-    /// L S+ D photons of the global pass from directions the caustic pass does not aim into (a
-    /// mirror plane's reflection): caustics too, as sparse as the global map, read like it.
-    std::optional<PhotonMap> unaimed_caustic;
-    std::optional<PrecomputedIrradiance> irradiance;
-    std::optional<IrradianceCache> irradiance_cache;  ///< final gathers, built by a pretrace
-};
 
 template <class SceneT> class RadianceIntegrator {
 public:
@@ -37,9 +25,11 @@ public:
 
     /// `lights_reaching[l] == false`: light l sends nothing to what the camera sees (the
     /// light-path plan's shadowed lights), so no shadow ray is traced to it; empty: all lights.
+    /// Automatic estimate radii are the ones `maps` carry (with_estimate_radii).
     RadianceIntegrator(const SceneT& scene, const PhotonMaps& maps, const RenderSettings& settings,
-                       std::vector<bool> lights_reaching = {}) noexcept
-        : scene_(scene), maps_(maps), settings_(settings), lights_reaching_(std::move(lights_reaching)) {}
+                       std::vector<bool> lights_reaching = {})
+        : scene_(scene), maps_(maps), settings_(with_estimate_radii(settings, maps)),
+          lights_reaching_(std::move(lights_reaching)) {}
 
     /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray.
     [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
@@ -240,7 +230,7 @@ private:
 
     const SceneT& scene_;
     const PhotonMaps& maps_;
-    const RenderSettings& settings_;
+    const RenderSettings settings_;  ///< a copy, with the maps' estimate radii
     std::vector<bool> lights_reaching_;
 };
 

@@ -139,6 +139,7 @@ template <class SceneT>
             stats.warnings.push_back({unaimed_caustics_warning, id});
     if (plan.global_pass && !cancelled()) {
         pass.photons = plan.global_photons;
+        pass.light_shares = plan.global_light_shares;  // by visible power (the caustic pass aims instead)
         pass.progress = report(RenderPhase::global_photons);
         pass.store = plan.global_store;
         pass.keep_normals = plan.precomputed_irradiance;
@@ -148,8 +149,10 @@ template <class SceneT>
         if (!traced.unaimed_caustics.empty()) maps.unaimed_caustic.emplace(std::span<const Photon>(traced.unaimed_caustics));
         settle(maps.global, traced.photons, stats.global);  // photons stay in trace order for the precomputation
         if (pass.keep_normals && !cancelled()) {
+            derive_estimate_radii(maps, settings);  // the precomputation reads the global radius
             const auto start = std::chrono::steady_clock::now();
-            maps.irradiance = precompute_irradiance(scene, *maps.global, traced.photons, traced.normals, settings, stats.rays);
+            maps.irradiance = precompute_irradiance(scene, *maps.global, traced.photons, traced.normals,
+                                                    with_estimate_radii(settings, maps), stats.rays);
             stats.precompute_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         }
     }
@@ -159,6 +162,11 @@ template <class SceneT>
         stats.caustic.stored += maps.unaimed_caustic->size();
         stats.caustic.memory_bytes += maps.unaimed_caustic->memory_bytes();
     }
+    derive_estimate_radii(maps, settings);
+    stats.global.radius = maps.global_radius;
+    stats.caustic.radius = maps.caustic_radius;
+    stats.global.radius_derived = settings.global_estimate.max_radius == 0.0f;
+    stats.caustic.radius_derived = settings.caustic_estimate.max_radius == 0.0f;
     return maps;
 }
 
@@ -226,7 +234,11 @@ template <class SceneT>
 [[nodiscard]] RenderResult render(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
                                   const RenderSettings& settings) {
     validate(settings);
-    check_memory(estimate_memory(settings, max_albedo(scene)), double(settings.memory_limit));
+    const EffectsPlan plan = plan_effects(scene, camera, settings);
+    // The maps the plan builds, not those the settings ask for: a pass it drops allocates nothing.
+    const PhotonPasses passes = plan.planned ? PhotonPasses{plan.global_photons, plan.caustic_photons, plan.precomputed_irradiance}
+                                             : requested_passes(settings);
+    check_memory(estimate_memory(settings, max_albedo(scene), passes), double(settings.memory_limit));
     const auto start = std::chrono::steady_clock::now();
     RenderResult result;
     RenderStats& stats = result.stats;
@@ -246,7 +258,6 @@ template <class SceneT>
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
-    const EffectsPlan plan = plan_effects(scene, camera, settings);
     stats.plan = {plan.photons_not_shot, plan.photons_moved, plan.passes_skipped};
     // Pass 2 obeys the plan too: without final gathering, pm reads the global map (absent or
     // empty when the plan dropped indirect light) instead of gathering from it.

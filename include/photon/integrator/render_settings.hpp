@@ -75,8 +75,10 @@ struct RenderSettings {
     unsigned max_photon_depth = 100;
     EmissionSampler emission = EmissionSampler::direct;
 
-    EstimateSettings global_estimate{.k = 100, .max_radius = 0.25f, .boundary_probes = 16};
-    EstimateSettings caustic_estimate{.k = 60, .max_radius = 0.05f, .kernel = {Filter::cone, 1.1f}};
+    /// The estimates' max_radius 0 derives it from the map's photon density once the map is built
+    /// (estimator/estimate_radius.hpp), so that it follows the scene's scale and the photon count.
+    EstimateSettings global_estimate{.k = 100, .max_radius = 0.0f, .boundary_probes = 16};
+    EstimateSettings caustic_estimate{.k = 60, .max_radius = 0.0f, .kernel = {Filter::cone, 1.1f}};
     /// pm: rays per final gather (0: read the global map directly at the first diffuse hit).
     unsigned final_gather_rays = 256;
     /// pm: final gathers are cached and interpolated with this error bound (Ward's a); 0 gathers
@@ -149,7 +151,8 @@ inline void validate(const RenderSettings& s) {
              std::to_string(s.final_gather_rays));
     for (const EstimateSettings* e : {&s.global_estimate, &s.caustic_estimate}) {
         if (e->k == 0) fail("photons per estimate must be at least 1");
-        if (!(e->max_radius > 0.0f) || !std::isfinite(e->max_radius)) fail("estimate radius must be positive");
+        if (!(e->max_radius >= 0.0f) || !std::isfinite(e->max_radius))
+            fail("estimate radius must be finite and >= 0 (0: from the photon density)");
         if (!(e->flatten >= 1.0f) || !std::isfinite(e->flatten)) fail("flatten must be >= 1");
         if (e->kernel.filter == Filter::cone && !(e->kernel.cone_k >= 1.0f)) fail("cone filter k must be >= 1");
     }

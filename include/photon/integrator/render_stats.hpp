@@ -33,6 +33,8 @@ struct PhotonMapStats {
     std::uint64_t rays = 0;     ///< photon rays traced
     std::uint64_t memory_bytes = 0;
     double trace_seconds = 0, build_seconds = 0;
+    float radius = 0;             ///< the estimates' max radius (0: no map)
+    bool radius_derived = false;  ///< derived from the photon density, not set by the settings
 };
 
 /// Something a render approximated or could not do well, for the user to read.
@@ -54,7 +56,7 @@ struct SppmStats {
 /// What the light-path plan saved against the settings (plan/effects_plan.hpp).
 struct PlanSavings {
     std::uint64_t photons_not_shot = 0;  ///< asked for by the settings, not emitted
-    std::uint64_t photons_moved = 0;     ///< global photons of lights hidden from the image, given to the others
+    std::uint64_t photons_moved = 0;     ///< global photons given to other lights than power alone would (EffectsPlan)
     std::vector<std::string> passes_skipped;
 };
 
@@ -99,6 +101,17 @@ struct RenderStats {
         (unsigned long long)s.caustic.emitted, (unsigned long long)s.caustic.stored,
         (unsigned long long)s.caustic.from_global, mib(s.caustic.memory_bytes), s.caustic.trace_seconds,
         s.caustic.build_seconds);
+    if (s.global.radius > 0 || s.caustic.radius > 0) {
+        auto radius = [](const PhotonMapStats& m) {
+            char text[64];
+            if (m.radius > 0)
+                std::snprintf(text, sizeof text, "%.4g%s", double(m.radius), m.radius_derived ? " (from the photon density)" : "");
+            else
+                std::snprintf(text, sizeof text, "none (no map)");
+            return std::string(text);
+        };
+        row("estimate radius", "global %s, caustic %s", radius(s.global).c_str(), radius(s.caustic).c_str());
+    }
     if (s.sppm.passes > 0)
         row("sppm", "%u passes, %llu photons emitted, %llu hits, mean radius %.4g, photons %.2f s, camera %.2f s",
             s.sppm.passes, (unsigned long long)s.sppm.emitted, (unsigned long long)s.sppm.photon_hits,
@@ -113,7 +126,7 @@ struct RenderStats {
     if (s.plan.photons_not_shot > 0 || s.plan.photons_moved > 0 || !s.plan.passes_skipped.empty()) {
         std::string skipped;
         for (const std::string& p : s.plan.passes_skipped) skipped += (skipped.empty() ? "" : ", ") + p;
-        row("plan saved", "%llu photons not shot, %llu moved from hidden lights; skipped: %s",
+        row("plan saved", "%llu photons not shot, %llu moved between lights; skipped: %s",
             (unsigned long long)s.plan.photons_not_shot, (unsigned long long)s.plan.photons_moved,
             skipped.empty() ? "nothing" : skipped.c_str());
     }

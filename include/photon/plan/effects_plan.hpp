@@ -29,6 +29,7 @@
 #include "../tracing/light_allocation.hpp"
 #include "../tracing/photon_tracer.hpp"
 #include "shape_facts.hpp"
+#include "visible_power.hpp"
 
 namespace photon {
 
@@ -43,6 +44,9 @@ struct LightPlan {
     bool emits = true;        ///< photons are shot from it
     std::string reason;       ///< why not (empty when it emits)
     std::size_t global_photons = 0, caustic_photons = 0;  ///< its share of each pass
+    /// Fraction of its power the pilot saw reach what the camera sees (visible_power.hpp); -1:
+    /// not measured (no camera, one light, no global pass, or `lights=on`).
+    double visible_fraction = -1.0;
 };
 
 struct EffectsPlan {
@@ -75,7 +79,13 @@ struct EffectsPlan {
     std::vector<std::string> dropped;
     std::vector<std::string> passes_skipped;  ///< the passes the settings would run and the plan does not
     std::uint64_t photons_not_shot = 0;       ///< photons the settings asked for and the plan does not emit
-    std::uint64_t photons_moved = 0;          ///< global photons of hidden lights given to the others
+    /// Global photons given to other lights than power alone would give them to: those of hidden
+    /// lights, and those moved by visible power.
+    std::uint64_t photons_moved = 0;
+    /// Per light, its share of the global photons by the power it sends to what the camera sees
+    /// (PhotonTracingSettings::light_shares); empty: shared by power.
+    std::vector<double> global_light_shares;
+    VisiblePowerPilot pilot{};  ///< how the shares were measured, if they were
 
     /// Per light, whether it emits (PhotonTracingSettings::light_emits).
     [[nodiscard]] std::vector<bool> light_emits() const {
@@ -308,6 +318,26 @@ template <class SceneT>
     for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
     if (settings.caustic_photons > 0)
         for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
+    // Spotlights: the targets outside a light's cone get none of its caustic photons, and a
+    // target outside every emitting light's cone gets none at all (its caustics need light that
+    // reaches it first by way of a diffuse bounce: the global pass carries them).
+    if (plan.caustic_pass) {
+        std::vector<std::uint32_t> targets;
+        for (std::uint32_t i = 0; i < objects.size(); ++i)
+            if (is_aimable_target(scene, i) && !plan.hidden_caustic_objects[i]) targets.push_back(i);
+        for (std::size_t l = 0; l < lights.size(); ++l)
+            if (emits[l] && light_cone(lights[l]) && aim.cones[l].empty())
+                plan.dropped.push_back("caustic photons from " + plan_detail::light_name(lights[l], l) +
+                                       ": its cone reaches no mirror or glass target");
+        for (std::uint32_t i : targets) {
+            bool reached = false;
+            for (std::size_t l = 0; l < lights.size() && !reached; ++l)
+                reached = emits[l] && plan_detail::cone_can_reach(scene, lights[l], i);
+            if (!reached)
+                plan.dropped.push_back("caustic photons at " + object_name(scene, i) +
+                                       ": no light's cone reaches it directly");
+        }
+    }
 
     const bool gathering = settings.mode == RenderMode::pm && settings.final_gather_rays > 0;
     const bool all_light = settings.mode == RenderMode::pm_direct;  // direct light from the map too
@@ -341,7 +371,8 @@ template <class SceneT>
     plan.caustic_photons = plan.caustic_pass ? settings.caustic_photons : 0;
     plan.photons_not_shot = (settings.global_photons - plan.global_photons) + (settings.caustic_photons - plan.caustic_photons);
     const auto global_share = photons_per_light<S>(lights, plan.global_photons, emits);
-    const auto caustic_share = photons_per_light<S>(lights, plan.caustic_photons, emits);
+    // A light whose cone reaches no caustic target shoots no caustic photon (caustic_aim).
+    const auto caustic_share = photons_per_light<S>(lights, plan.caustic_photons, aim.aiming_lights(lights.size(), emits));
     const auto unplanned_share = photons_per_light<S>(lights, plan.global_photons);
     for (std::size_t l = 0; l < lights.size(); ++l) {
         plan.lights[l].global_photons = global_share[l];
@@ -354,11 +385,32 @@ template <class SceneT>
     return plan;
 }
 
-/// The plan for `scene` seen by `camera` under `settings`.
+/// The plan for `scene` seen by `camera` under `settings`. With several lights, the global
+/// photons are shared by the power each sends to what the camera sees, as a pilot pass measures
+/// it, with a floor (visible_power.hpp), unless `lights=on` asks for photon's old sharing by power.
 template <class SceneT>
 [[nodiscard]] EffectsPlan plan_effects(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
                                        const RenderSettings& settings) {
-    return plan_effects(scene, std::optional(camera.location()), settings);
+    using S = typename SceneT::scalar_type;
+    EffectsPlan plan = plan_effects(scene, std::optional(camera.location()), settings);
+    const auto lights = scene.lights();
+    const std::vector<bool> emits = plan.light_emits();
+    if (!plan.planned || !plan.global_pass || std::count(emits.begin(), emits.end(), true) < 2 ||
+        settings.effects.lights == EffectSwitch::on)
+        return plan;
+    plan.pilot.seed = settings.seed;
+    const std::vector<double> fraction = visible_power_fractions(scene, camera, emits, settings.emission, plan.pilot);
+    plan.global_light_shares = visible_power_shares<S>(lights, fraction, emits, plan.pilot.floor);
+    const auto shared = photons_per_light<S>(lights, plan.global_photons, emits, plan.global_light_shares);
+    const auto unplanned = photons_per_light<S>(lights, plan.global_photons);
+    plan.photons_moved = 0;
+    for (std::size_t l = 0; l < lights.size(); ++l) {
+        if (emits[l]) plan.lights[l].visible_fraction = fraction[l];
+        plan.lights[l].global_photons = shared[l];
+        // Moved: hidden lights' photons, and those the visible shares give elsewhere.
+        plan.photons_moved += unplanned[l] > shared[l] ? unplanned[l] - shared[l] : 0;
+    }
+    return plan;
 }
 
 }  // namespace photon

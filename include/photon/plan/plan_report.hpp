@@ -3,6 +3,7 @@
 // The light-path plan as a few lines of text, for `photon check`, every render and embedders:
 // the path classes, the maps with their photons, the passes, and every dropped item's reason.
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -44,18 +45,40 @@ namespace photon {
                 (plan.global_for_unaimed_caustics_only ? " (for unaimed caustics only)" : "");
     if (plan.caustic_pass) maps += (maps.empty() ? "" : ", ") + ("caustic " + std::to_string(plan.caustic_photons) + " photons");
     line("maps", maps.empty() ? "none" : maps);
-    if (plan.lights.size() > 1 && (plan.global_pass || plan.caustic_pass)) {
+    if (plan.lights.size() > 8 && (plan.global_pass || plan.caustic_pass)) {
+        // Too many to list: the range, and the light that gets the most.
+        std::size_t most = 0, least = 0, silent = 0;
+        for (std::size_t l = 0; l < plan.lights.size(); ++l) {
+            const std::size_t n = plan.lights[l].global_photons, m = plan.lights[most].global_photons;
+            if (n > m) most = l;
+            if (n < plan.lights[least].global_photons) least = l;
+            silent += plan.lights[l].emits ? 0 : 1;
+        }
+        line("photons/light", std::to_string(plan.lights.size()) + " lights (" + std::to_string(silent) +
+                                  " silent): global photons from " + std::to_string(plan.lights[least].global_photons) +
+                                  " (light " + std::to_string(least) + ") to " +
+                                  std::to_string(plan.lights[most].global_photons) + " (light " + std::to_string(most) + ")");
+    } else if (plan.lights.size() > 1 && (plan.global_pass || plan.caustic_pass)) {
         std::string shares;
         for (std::size_t l = 0; l < plan.lights.size(); ++l) {
-            if (l == 8) {
-                shares += "; ...";
-                break;
-            }
             const LightPlan& lp = plan.lights[l];
             shares += (l ? "; " : "") + std::to_string(l) + ": " +
                       (lp.emits ? std::to_string(lp.global_photons) + " + " + std::to_string(lp.caustic_photons) : "none");
         }
         line("photons/light", shares + " (global + caustic)");
+    }
+    if (!plan.global_light_shares.empty()) {
+        std::size_t unseen = 0;
+        for (const LightPlan& lp : plan.lights) {
+            if (lp.visible_fraction < 0) continue;
+            unseen += lp.visible_fraction == 0 ? 1 : 0;
+        }
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "global photons by the power reaching what the camera sees (a pilot of %u photons per light; "
+                      "each light keeps %.0f%% of its share by power); %zu of %zu lights seen reaching nothing visible",
+                      plan.pilot.photons_per_light, 100.0 * plan.pilot.floor, unseen, plan.lights.size());
+        line("light shares", text);
     }
     std::string passes;
     auto pass = [&](bool runs, const char* name) {

@@ -5,6 +5,7 @@
 // drawn from the mixture of cones is weighted by the mixture's density, so overlapping cones are
 // counted once (a one-sample balance heuristic) and the caustic map stays unbiased.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -96,6 +97,14 @@ template <Scalar S> struct CausticAim {
             if (!c.empty()) return false;
         return true;
     }
+    /// Per light, whether it shoots caustic photons: it may emit (`emits`, empty: all) and has a
+    /// target its cone can reach.
+    [[nodiscard]] std::vector<bool> aiming_lights(std::size_t lights, const std::vector<bool>& emits = {}) const {
+        std::vector<bool> aiming(lights, false);
+        for (std::size_t l = 0; l < lights && l < cones.size(); ++l)
+            aiming[l] = (l >= emits.size() || emits[l]) && !cones[l].empty();
+        return aiming;
+    }
     [[nodiscard]] bool covers(std::size_t light, const Vec3<S>& direction) const noexcept {
         if (light >= cones.size()) return false;
         for (const auto& c : cones[light])
@@ -109,8 +118,20 @@ template <class SceneT> [[nodiscard]] bool is_aimable_target(const SceneT& scene
     return scene.is_caustic_target(i) && scene.object_bounds(i).is_finite();
 }
 
+/// Whether a light's cone (axis, half-angle) and a target's cone of directions can share a
+/// direction: the angle between their axes is at most the sum of their half-angles (plus 1e-3
+/// radians for rounding). A target cone of the whole sphere always can.
+template <Scalar S> [[nodiscard]] bool cones_meet(const Cone<S>& light, const TargetCone<S>& target) noexcept {
+    if (!(target.one_minus_cos < S(2))) return true;
+    const double target_half = std::acos(std::clamp(1.0 - double(target.one_minus_cos), -1.0, 1.0));
+    const double light_half = double(light.half_angle_degrees()) * pi<double> / 180.0;
+    const double between = std::acos(std::clamp(double(glm::dot(light.axis(), target.axis)), -1.0, 1.0));
+    return between <= light_half + target_half + 1e-3;
+}
+
 /// The cones of every light towards every aimable caustic target, but those with `skip[i]` (the
-/// light-path plan's targets whose caustics the camera cannot see).
+/// light-path plan's targets whose caustics the camera cannot see) and, for a light with a cone
+/// (a spotlight), the targets its cone cannot reach: their photons would all be thrown away.
 template <class SceneT>
 [[nodiscard]] CausticAim<typename SceneT::scalar_type> caustic_aim(const SceneT& scene, const std::vector<bool>& skip = {}) {
     using S = typename SceneT::scalar_type;
@@ -124,6 +145,8 @@ template <class SceneT>
     if (targets.empty()) return aim;
     for (const auto& light : scene.lights()) {
         aim.cones.push_back(target_cones(light, targets));
+        if (const auto& cone = light_cone(light))
+            std::erase_if(aim.cones.back(), [&](const TargetCone<S>& t) { return !cones_meet(*cone, t); });
         S sum = 0;
         for (const auto& c : aim.cones.back()) sum += c.solid_angle;
         aim.total_solid_angle.push_back(sum);

@@ -46,6 +46,8 @@ struct PhotonTracingSettings {
     bool collect_unaimed_caustics = false;
     /// Per light, whether it emits photons (photons_per_light); empty: every light does.
     std::vector<bool> light_emits{};
+    /// Per light, its relative share of the photons (photons_per_light); empty: by power.
+    std::vector<double> light_shares{};
     std::uint64_t seed = 1;
     unsigned threads = 0;         ///< 0: all hardware threads
     std::function<void(double)> progress{};  ///< fraction of photons emitted; serialised calls
@@ -81,8 +83,10 @@ template <Scalar S> struct EmissionPlan {
     std::vector<Rgb<S>> scale;       // power carried by each photon of a light, before any weighting
     std::size_t emitting = 0;        // photons given to lights: 0 when no light may emit
 
-    template <class Lights> EmissionPlan(const Lights& lights, std::size_t count, const std::vector<bool>& emits = {}) {
-        const auto counts = photons_per_light<S>(lights, count, emits);
+    template <class Lights>
+    EmissionPlan(const Lights& lights, std::size_t count, const std::vector<bool>& emits = {},
+                 const std::vector<double>& shares = {}) {
+        const auto counts = photons_per_light<S>(lights, count, emits, shares);
         std::size_t at = 0;
         for (std::size_t l = 0; l < counts.size(); ++l) {
             first.push_back(at);
@@ -210,7 +214,7 @@ template <class SceneT>
     // No light, or none with power: nothing to emit. (Emitting anyway traced photons of zero
     // power, and without lights read lights[0] out of range.)
     if (!detail::has_emitting_light(lights)) return {};
-    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits);
+    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits, settings.light_shares);
     if (plan.emitting == 0) return {};
     return detail::run_blocks(settings, 0x676c6f62616cULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);
@@ -242,7 +246,8 @@ template <class SceneT>
     using S = typename SceneT::scalar_type;
     if (aim.empty() || !scene_has_caustics(scene)) return {};
     const auto lights = scene.lights();
-    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits);
+    // A light with nothing to aim at (its cone reaches no target) shoots no caustic photon.
+    const detail::EmissionPlan<S> plan(lights, settings.photons, aim.aiming_lights(lights.size(), settings.light_emits));
     if (plan.emitting == 0) return {};
     return detail::run_blocks(settings, 0x636175737469ULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);

@@ -188,8 +188,9 @@ inline constexpr RenderSetting render_settings_table[] = {
      .hi = 1e6, .noun = "the photons per estimate (`count`)", .help = "Photons per global estimate",
      .field = estimate_member<&RenderSettings::global_estimate, &EstimateSettings::k>},
     {.key = "global_estimate.max_radius", .keyword = "radius", .block = "global_estimate", .flag = "--global-radius",
-     .kind = SettingKind::real, .lo_exclusive = true, .noun = "the estimate radius",
-     .help = "Largest radius of a global estimate (scene units)",
+     .kind = SettingKind::real, .noun = "the estimate radius",
+     .help = "Largest radius of a global estimate, scene units (0: twice the global map's median distance "
+             "from a photon to its k-th nearest)",
      .field = estimate_member<&RenderSettings::global_estimate, &EstimateSettings::max_radius>},
     {.key = "global_estimate.flatten", .keyword = "flatten", .block = "global_estimate", .kind = SettingKind::real,
      .lo = 1, .noun = "`flatten`",
@@ -202,8 +203,9 @@ inline constexpr RenderSetting render_settings_table[] = {
      .hi = 1e6, .noun = "the photons per estimate (`count`)", .help = "Photons per caustic estimate",
      .field = estimate_member<&RenderSettings::caustic_estimate, &EstimateSettings::k>},
     {.key = "caustic_estimate.max_radius", .keyword = "radius", .block = "caustic_estimate",
-     .flag = "--caustic-radius", .kind = SettingKind::real, .lo_exclusive = true, .noun = "the estimate radius",
-     .help = "Largest radius of a caustic estimate",
+     .flag = "--caustic-radius", .kind = SettingKind::real, .noun = "the estimate radius",
+     .help = "Largest radius of a caustic estimate, scene units (0: twice the distance within which 90% of "
+             "the caustic map's photons find their k nearest)",
      .field = estimate_member<&RenderSettings::caustic_estimate, &EstimateSettings::max_radius>},
     {.key = "caustic_estimate.flatten", .keyword = "flatten", .block = "caustic_estimate", .kind = SettingKind::real,
      .lo = 1, .noun = "`flatten`",
