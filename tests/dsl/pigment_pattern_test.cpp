@@ -151,3 +151,27 @@ TEST_CASE("export-pov writes a pattern back, and reading it gives the same patte
         CHECK(p.desc.objects[i].transform == q.desc.objects[i].transform);
     }
 }
+
+TEST_CASE("examples/scenes/textures.pov builds without warnings, and exported it builds the same textures",
+          "[dsl][texture]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    const auto desc = dsl::parse_file(std::filesystem::path(PHOTON_SCENES_DIR) / "textures.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto a = dsl::build<double>(desc, bo);
+    INFO(all_messages(warnings));
+    CHECK(warnings.empty());
+    std::size_t textured = 0;
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i) textured += a.scene.material_of(i).is_textured();
+    CHECK(textured == 7);  // the floor, three walls and three balls; not the ceiling or the glass
+    const auto b = dsl::build<double>(dsl::parse_string(dsl::export_pov(desc), "exported.pov"));
+    REQUIRE(b.scene.objects().size() == a.scene.objects().size());
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i)
+        for (const Vec3<double>& p : {Vec3<double>(0.3, 0.01, -0.7), Vec3<double>(-1.21, 0.9, 0.4), Vec3<double>(0.6, 0.3, 0.4)}) {
+            INFO("object " << i);
+            const Rgb<double> x = a.scene.material_of(i).diffuse_at(p), y = b.scene.material_of(i).diffuse_at(p);
+            CHECK(glm::length(x - y) < 1e-9);
+        }
+}
