@@ -36,6 +36,13 @@
 #include "material/material.hpp"
 #include "material/scatter.hpp"
 
+#include "texture/color_map.hpp"
+#include "texture/noise.hpp"
+#include "texture/pattern.hpp"
+#include "texture/pigment.hpp"
+#include "texture/reflectance_field.hpp"
+#include "texture/wave.hpp"
+
 #include "light/cone.hpp"
 #include "light/light.hpp"
 #include "light/point_light.hpp"

@@ -104,11 +104,11 @@ grep -q "warning: light_source without" "$work/err" || fail "warning not printed
 expect 1 "$photon" check --strict "$work/warn.pov"
 
 # What photon reads but cannot render: warnings, a summary by kind, and errors under --strict.
-printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nfog { distance 5 }\ncylinder { 0, y, 1 }\ncone { 0, 1, y, 0 }\nsphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 } }\n' >"$work/degraded.pov"
+printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nfog { distance 5 }\ncylinder { 0, y, 1 }\ncone { 0, 1, y, 0 }\nsphere { 0, 1 pigment { hexagon rgb 1, rgb 0, rgb 0.5 } finish { ambient 0 } }\nsphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 } }\n' >"$work/degraded.pov"
 expect 0 "$photon" check "$work/degraded.pov"
 grep -q "degraded.pov:4:1: warning: \`cylinder\` is skipped: photon has no cylinder yet" "$work/err" || fail "skipped cylinder not reported"
 grep -q "^           2 skipped object: 1 cone, 1 cylinder" "$work/out" || { fail "no summary of skipped objects"; cat "$work/out"; }
-grep -q "^           1 approximated pigment: 1 checker" "$work/out" || fail "no summary of approximated pigments"
+grep -q "^           1 approximated pigment: 1 hexagon" "$work/out" || fail "no summary of approximated pigments (checker is evaluated)"
 grep -q "^           1 ignored effect: 1 fog" "$work/out" || fail "no summary of ignored effects"
 expect 1 "$photon" check --strict "$work/degraded.pov"
 grep -q "photon: 4 warnings (--strict)" "$work/err" || { fail "--strict on degraded constructs"; cat "$work/err"; }

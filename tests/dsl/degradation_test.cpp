@@ -107,6 +107,7 @@ TEST_CASE("a scene whose every object was skipped says that nothing renders", "[
 }
 
 TEST_CASE("listed patterns are approximated by the mean of their colours", "[dsl][degradation]") {
+    // checker is evaluated (pigment_pattern_test.cpp); its average colour is still recorded.
     check_rgb(first_color("pigment { checker rgb 1, rgb 0 }"), 0.5, 0.5, 0.5);
     check_rgb(first_color("pigment { checker color rgb <1, 0, 0> color rgb <0, 0, 1> scale 0.5 }"), 0.5, 0, 0.5);
     check_rgb(first_color("pigment { checker }"), 0, 0.5, 0.5);  // POV-Ray's blue and green
@@ -117,11 +118,15 @@ TEST_CASE("listed patterns are approximated by the mean of their colours", "[dsl
     const double brick = 7.5 * 2.5 * 4 / 108;
     check_rgb(first_color("pigment { brick rgb 1, rgb 0 }"), 1 - brick, 1 - brick, 1 - brick);
     check_rgb(first_color("pigment { brick rgb 0, rgb 1 brick_size <1, 1, 1> mortar 0.5 }"), 0.125, 0.125, 0.125);
-    const Parsed p = parse(std::string(lit) + "plane { y, 0 pigment { checker rgb 1, rgb 0 } }");
-    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:24 checker"});
+    const Parsed p = parse(std::string(lit) +
+                           "plane { y, 0 pigment { hexagon rgb 1, rgb 0, rgb 0.5 } }\n"
+                           "plane { y, 0 pigment { checker rgb 1, rgb 0 } }\n"
+                           "plane { y, 0 pigment { checker pigment { rgb 1 } pigment { bozo } } }\n");
+    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:24 hexagon", "5:24 checker"});
     CHECK_THAT(all_messages(p.warnings),
-               Contains("`checker` is approximated by the mean of its 2 colours, rgb <0.5, 0.5, 0.5>: photon has no "
-                        "patterned pigments yet"));
+               Contains("`hexagon` is approximated by the mean of its 3 colours, rgb <0.5, 0.5, 0.5>: photon does not "
+                        "evaluate this pattern"));
+    CHECK_THAT(all_messages(p.warnings), Contains("its entries are patterned pigments, which photon does not nest"));
 }
 
 TEST_CASE("mapped patterns are approximated by their colour map's average over [0, 1]", "[dsl][degradation]") {
@@ -161,8 +166,10 @@ TEST_CASE("declared maps, pigment_map, average and image_map", "[dsl][degradatio
     check_rgb(p.desc.objects[1].texture->pigment.color.rgb, 0.5, 0, 0);
     check_rgb(p.desc.objects[2].texture->pigment.color.rgb, 1, 1, 1);
     check_rgb(p.desc.objects[3].texture->pigment.color.rgb, 0.5, 0.5, 0.5);
-    CHECK(places(p.warnings, "approximated pigment") ==
-          std::vector<std::string>{"6:25 onion", "7:25 leopard", "8:25 image_map"});
+    // onion and leopard (whose pigment_map entries are plain colours) are evaluated.
+    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"8:25 image_map"});
+    CHECK(p.desc.objects[1].texture->pigment.pattern != nullptr);
+    CHECK(p.desc.objects[2].texture->pigment.pattern != nullptr);
     CHECK_THAT(all_messages(p.warnings), Contains("`image_map` is approximated by mid grey"));
     CHECK_THAT(error_of("#declare M = color_map { [0 rgb 1] }\nsphere { 0, 1 pigment { bozo pigment_map { M } } }"),
                Contains("2:44: expected a pigment_map identifier, found `M` (a color_map, declared at 1:10)"));
@@ -249,7 +256,7 @@ TEST_CASE("every form of normal parses and is ignored", "[dsl][degradation]") {
 TEST_CASE("photon's own warnings about what it renders differently carry a kind", "[dsl][degradation]") {
     // Every warning of these constructs has its kind and keyword for the summary of `photon check`.
     const Parsed b = parse(std::string(lit) +
-                           "fog { distance 1 } cylinder { 0, y, 1 } sphere { 0, 1 pigment { bozo } "
+                           "fog { distance 1 } cylinder { 0, y, 1 } sphere { 0, 1 pigment { crackle } "
                            "normal { bumps 1 } }\n");
     INFO(all_messages(b.warnings));
     REQUIRE(b.warnings.size() == 4);

@@ -158,7 +158,7 @@ TEMPLATE_TEST_CASE("a ray leaving glass at and around the critical angle", "[har
     for (const S theta : angles) {
         ++k;
         const Vec3<S> d{std::sin(theta), S(0), -std::cos(theta)};
-        const Scattering<S> s = glass.scattering(std::cos(theta), false);
+        const Scattering<S> s = glass.scattering(Vec3<S>(S(0)), std::cos(theta), false);
         const auto t = refract(d, n, relative_eta(glass, false));
         if (!is_finite(s.specular) || !is_finite(s.transmission)) ++bad;
         if (std::abs(average(s.specular + s.transmission) - S(1)) > S(1e-5)) ++bad;  // nothing is lost
@@ -172,7 +172,7 @@ TEMPLATE_TEST_CASE("a ray leaving glass at and around the critical angle", "[har
         // Photon tracing at this hit: Russian roulette never yields a NaN direction or weight.
         Pcg32 rng(std::uint64_t(k), 0);
         for (int i = 0; i < 16; ++i) {
-            const PhotonScatter<S> p = russian_roulette(glass, facing(outward, d), d, rng);
+            const PhotonScatter<S> p = russian_roulette(glass, Vec3<S>(S(0)), facing(outward, d), d, rng);
             if (p.event == ScatterEvent::absorbed || !is_finite(p.direction) || !is_finite(p.weight)) ++bad;
         }
     }

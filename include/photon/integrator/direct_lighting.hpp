@@ -35,6 +35,8 @@ template <Scalar S>
 
 /// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
 /// side, from every light, by shadow rays leaving from `shadow_origin` (x offset off the surface).
+/// `albedo` is the material's diffuse reflectance at x (material.diffuse_at(x)), read once by the
+/// caller, which needs it too.
 /// The light is evaluated at x itself, not at the offset origin: the offset grows with the
 /// distance from the world origin (1.5 cm at 1000 units in float) and would otherwise bias
 /// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
@@ -44,9 +46,9 @@ template <Scalar S>
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
                                      const Vec3<S>& n, const Vec3<S>& wo, const Material<S>& material,
-                                     unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {}) {
+                                     const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {}) {
     Rgb<S> total(S(0));
-    const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
+    const Rgb<S> brdf = albedo * inv_pi<S>;
     const S phong = material.params().phong;
     const auto lights = scene.lights();
     for (std::size_t l = 0; l < lights.size(); ++l) {

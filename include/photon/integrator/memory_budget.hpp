@@ -142,7 +142,7 @@ template <class SceneT>
             if (!material.has_diffuse()) continue;  // never stores a photon (stores_per_photon)
             const auto& p = material.params();
             auto avg = [](const auto& c) { return (double(c.x) + double(c.y) + double(c.z)) / 3.0; };
-            rho = std::max(rho, avg(p.diffuse) + avg(p.specular) + avg(p.transmission));
+            rho = std::max(rho, avg(material.max_diffuse()) + avg(p.specular) + avg(p.transmission));
         }
         return rho;
     } else {

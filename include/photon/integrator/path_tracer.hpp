@@ -69,10 +69,12 @@ public:
             const S error = intersection_error(x, ray.origin);
             // Russian roulette's probability of the diffuse event (its pd), the BSDF strategy's
             // share of the direct light here.
-            const S pd = material.has_diffuse() ? average(material.scattering(f.cos_i, f.entering).diffuse) : S(0);
+            const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
+            const S pd = material.has_diffuse() ? average(sc.diffuse) : S(0);
             if (material.has_diffuse())
-                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction, material, pd, ctx);
-            const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, ctx.rng);
+                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction,
+                                                     material, sc.diffuse, pd, ctx);
+            const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng);
             if (s.event == ScatterEvent::absorbed) break;
             throughput *= s.weight;
             if (s.event == ScatterEvent::diffuse)
@@ -103,9 +105,10 @@ private:
     /// density is pd cos / pi; the Phong highlight has weight 1, as no path samples it (it is
     /// direct light only, as in pm's direct_lighting, which this matches).
     [[nodiscard]] Rgb<S> sample_lights(const Vec3<S>& x, const Vec3<S>& shadow_origin, const Vec3<S>& n,
-                                       const Vec3<S>& wo, const Material<S>& material, S pd, ShadingContext& ctx) const {
+                                       const Vec3<S>& wo, const Material<S>& material, const Rgb<S>& albedo, S pd,
+                                       ShadingContext& ctx) const {
         Rgb<S> total(S(0));
-        const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
+        const Rgb<S> brdf = albedo * inv_pi<S>;
         for (const Light<S>& light : scene_.lights()) {
             const auto sample = sample_light(light, x, ctx.rng.uniform2<S>());
             if (!sample) continue;

@@ -42,15 +42,16 @@ public:
         Rgb<S> result(S(0));
         if (material.has_diffuse()) {
             const Vec3<S> above = offset_origin(x, f.normal, error);
-            const Rgb<S> brdf = material.diffuse() * inv_pi<S>;
+            const Rgb<S> albedo = material.diffuse_at(x);
+            const Rgb<S> brdf = albedo * inv_pi<S>;
             switch (settings_.mode) {
             case RenderMode::rt:
-                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx,
-                                          lights_reaching_);
+                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, albedo,
+                                          settings_.shadow_samples, ctx, lights_reaching_);
                 break;
             case RenderMode::pm:
-                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, settings_.shadow_samples, ctx,
-                                          lights_reaching_);
+                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, albedo,
+                                          settings_.shadow_samples, ctx, lights_reaching_);
                 result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
                                       ? final_gather(above, f.normal, ctx)
@@ -75,8 +76,8 @@ private:
     [[nodiscard]] Rgb<S> specular(const Ray<S>& ray, const SurfaceHit<S>& surface, const Facing<S>& f, S error,
                                   unsigned depth, ShadingContext& ctx, bool gathering) const {
         const Material<S>& material = *surface.material;
-        const Scattering<S> s = material.scattering(f.cos_i, f.entering);
         const Vec3<S>& x = surface.hit.point;
+        const Scattering<S> s = material.scattering(x, f.cos_i, f.entering);
         Rgb<S> result(S(0));
         Rgb<S> reflected_weight = s.specular;
         if (!is_black(s.transmission)) {
@@ -164,7 +165,7 @@ public:
         const S length = path_length + surface->hit.t;
         if (material.has_diffuse()) visit(offset_origin(x, f.normal, error), f.normal, length);
         if (depth >= settings_.max_ray_depth || !material.is_specular()) return;
-        const Scattering<S> sc = material.scattering(f.cos_i, f.entering);
+        const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
         bool reflect_too = !is_black(sc.specular);
         if (!is_black(sc.transmission)) {
             if (const auto refracted = refract(ray.direction, f.normal, relative_eta(material, f.entering)))
@@ -195,7 +196,8 @@ private:
             const Rgb<S> irradiance = maps_.irradiance ? precomputed_irradiance(above, f.normal, ctx)
                                                        : map_irradiance(maps_.global, settings_.global_estimate,
                                                                         above, f.normal, ctx);
-            result += material.diffuse() * inv_pi<S> * irradiance;
+            // Irradiance, precomputed or estimated, times the albedo here: right under a texture.
+            result += material.diffuse_at(surface->hit.point) * inv_pi<S> * irradiance;
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, true);

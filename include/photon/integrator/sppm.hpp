@@ -141,7 +141,7 @@ template <class SceneT>
                     // Depth 0 is direct light, which the shadow rays of the camera pass cover.
                     if (depth > 0 && material.has_diffuse())
                         block.hits.push_back({Vec3<float>(surface->hit.point), Rgb<float>(power), Vec3<float>(f.normal)});
-                    const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, rng);
+                    const PhotonScatter<S> s = russian_roulette(material, surface->hit.point, f, ray.direction, rng);
                     if (s.event == ScatterEvent::absorbed) break;
                     power *= s.weight;
                     const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;

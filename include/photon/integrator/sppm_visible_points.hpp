@@ -76,10 +76,10 @@ template <class SceneT>
         if (material.has_diffuse()) {
             const Vec3<S> above = offset_origin(x, f.normal, error);
             path.direct += throughput * direct_lighting(scene, x, above, f.normal, -ray.direction, material,
-                                                        settings.shadow_samples, ctx);
+                                                        material.diffuse_at(x), settings.shadow_samples, ctx);
         }
         const bool continues = depth < settings.max_ray_depth && material.is_specular();
-        const Scattering<S> sc = material.scattering(f.cos_i, f.entering);
+        const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
         const S pd = material.has_diffuse() ? average(sc.diffuse) : S(0);
         const S ps = continues ? average(sc.specular) : S(0);
         const S pt = continues ? average(sc.transmission) : S(0);

@@ -3,7 +3,8 @@
 // The paper's surface model: a Lambertian diffuse part, a perfect mirror part and a perfect
 // transmission part, each with its own reflectance per RGB channel, plus a Phong highlight that
 // only direct light sees. Glass splits its transmission into reflection and refraction by the
-// Fresnel equations, with total internal reflection.
+// Fresnel equations, with total internal reflection. The diffuse reflectance may vary over the
+// surface (a texture): it is then evaluated at each hit point, by every pass alike.
 
 #include <cmath>
 #include <sstream>
@@ -11,19 +12,22 @@
 #include <string>
 
 #include "../math/vec.hpp"
+#include "../texture/reflectance_field.hpp"
 #include "fresnel.hpp"
 
 namespace photon {
 
 /// Everything a Material is made of; see Material for the meaning and the checks.
 template <Scalar S> struct MaterialParams {
-    Rgb<S> diffuse{S(0)};       ///< Lambertian albedo rho_d (BRDF rho_d / pi)
+    Rgb<S> diffuse{S(0)};       ///< Lambertian albedo rho_d (BRDF rho_d / pi); with a texture, its factor
     Rgb<S> specular{S(0)};      ///< mirror reflectance rho_s
     Rgb<S> transmission{S(0)};  ///< transmittance rho_t through a refracting interface
     S ior = S(1);               ///< index of refraction inside the surface (outside is 1)
     bool fresnel = false;       ///< split transmission into reflection F and refraction 1 - F
     S phong = S(0);             ///< Phong highlight strength (direct light only, not energy conserving)
     S phong_exponent = S(40);   ///< Phong exponent (POV-Ray's phong_size)
+    /// Optional texture: the albedo at point p is then diffuse * diffuse_texture(p).
+    AnyReflectanceField<S> diffuse_texture{};
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -34,13 +38,18 @@ template <Scalar S> struct Scattering {
 
 /// A validated surface material. Invariants (checked at construction, std::invalid_argument with
 /// the offending values otherwise): every reflectance is finite and >= 0; diffuse + specular +
-/// transmission <= 1 in every channel (energy conservation); ior > 0 and finite; phong >= 0.
+/// transmission <= 1 in every channel (energy conservation; with a texture, diffuse times the
+/// texture's upper bound); ior > 0 and finite; phong >= 0.
 template <Scalar S> class Material {
 public:
     explicit Material(const MaterialParams<S>& params);
 
     /// Lambertian surface of the given albedo.
     [[nodiscard]] static Material lambertian(const Rgb<S>& albedo) { return Material({.diffuse = albedo}); }
+    /// Lambertian surface whose albedo at p is texture(p) (a Pigment, or a user's ReflectanceField).
+    template <ReflectanceField<S> F> [[nodiscard]] static Material lambertian(F texture) {
+        return Material({.diffuse = Rgb<S>(S(1)), .diffuse_texture = AnyReflectanceField<S>(std::move(texture))});
+    }
     /// Perfect mirror.
     [[nodiscard]] static Material mirror(const Rgb<S>& reflectance = Rgb<S>(S(1))) {
         return Material({.specular = reflectance});
@@ -51,18 +60,30 @@ public:
     }
 
     [[nodiscard]] const MaterialParams<S>& params() const noexcept { return params_; }
+    /// The diffuse albedo's constant factor: the albedo itself unless the material is textured.
     [[nodiscard]] const Rgb<S>& diffuse() const noexcept { return params_.diffuse; }
+    [[nodiscard]] bool is_textured() const noexcept { return bool(params_.diffuse_texture); }
+    /// The diffuse albedo at surface point `p` (one branch for an untextured material).
+    [[nodiscard]] Rgb<S> diffuse_at(const Vec3<S>& p) const {
+        if (!params_.diffuse_texture) [[likely]]
+            return params_.diffuse;
+        return params_.diffuse * params_.diffuse_texture(p);
+    }
+    /// Per channel, the largest diffuse albedo anywhere on the surface.
+    [[nodiscard]] Rgb<S> max_diffuse() const noexcept {
+        return params_.diffuse_texture ? params_.diffuse * params_.diffuse_texture.upper_bound() : params_.diffuse;
+    }
     [[nodiscard]] S ior() const noexcept { return params_.ior; }
-    [[nodiscard]] bool has_diffuse() const noexcept { return !is_black(params_.diffuse); }
+    [[nodiscard]] bool has_diffuse() const noexcept { return has_diffuse_; }
     /// True when the surface can reflect or refract specularly (it can form caustics).
     [[nodiscard]] bool is_specular() const noexcept {
         return !is_black(params_.specular) || !is_black(params_.transmission);
     }
 
-    /// Reflectances at a hit where the incoming unit direction makes cos_i (> 0) with the normal
-    /// facing it, entering the surface when `entering` (else leaving it).
-    [[nodiscard]] Scattering<S> scattering(S cos_i, bool entering) const noexcept {
-        Scattering<S> s{params_.diffuse, params_.specular, params_.transmission};
+    /// Reflectances at hit point `p` where the incoming unit direction makes cos_i (> 0) with the
+    /// normal facing it, entering the surface when `entering` (else leaving it).
+    [[nodiscard]] Scattering<S> scattering(const Vec3<S>& p, S cos_i, bool entering) const {
+        Scattering<S> s{diffuse_at(p), params_.specular, params_.transmission};
         if (params_.fresnel && !is_black(params_.transmission)) {
             const S f = entering ? fresnel_dielectric(cos_i, S(1), params_.ior)
                                  : fresnel_dielectric(cos_i, params_.ior, S(1));
@@ -74,6 +95,7 @@ public:
 
 private:
     MaterialParams<S> params_;
+    bool has_diffuse_ = false;  ///< some point of the surface reflects diffusely
 };
 
 template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(p) {
@@ -86,20 +108,24 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
         }
     };
     check_rgb(p.diffuse, "diffuse");
+    if (p.diffuse_texture) check_rgb(p.diffuse_texture.upper_bound(), "the diffuse texture's upper bound as");
     check_rgb(p.specular, "specular");
     check_rgb(p.transmission, "transmission");
-    const Rgb<S> sum = p.diffuse + p.specular + p.transmission;
+    const Rgb<S> diffuse = max_diffuse();
+    const Rgb<S> sum = diffuse + p.specular + p.transmission;
     constexpr const char* channel[] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {
         // A little slack for values like 0.7 + 0.3 that round above 1.
         if (sum[c] > S(1) + S(1e-6)) {
             std::ostringstream os;
             os << "diffuse + specular + transmission = " << sum[c] << " > 1 in the " << channel[c]
-               << " channel (diffuse " << p.diffuse[c] << ", specular " << p.specular[c] << ", transmission "
+               << " channel (diffuse " << diffuse[c] << (p.diffuse_texture ? " at the texture's brightest" : "")
+               << ", specular " << p.specular[c] << ", transmission "
                << p.transmission[c] << "); a surface cannot reflect more light than it receives";
             fail(os.str());
         }
     }
+    has_diffuse_ = !is_black(diffuse);
     if (!(p.ior > S(0)) || !std::isfinite(p.ior)) {
         std::ostringstream os;
         os << "ior must be positive and finite, got " << p.ior;

@@ -42,10 +42,10 @@ template <Scalar S> struct PhotonScatter {
 /// rho_d,avg reflects diffusely, below rho_d,avg + rho_s,avg specularly, below that + rho_t,avg
 /// transmits, else the photon is absorbed. The survivor's power is scaled per channel by
 /// rho / rho_avg so that the expected power per channel is exact (paper, section 3.1).
+/// `s` is material.scattering() at the hit (its diffuse part the texture's value there).
 template <Scalar S>
-[[nodiscard]] PhotonScatter<S> russian_roulette(const Material<S>& material, const Facing<S>& f, const Vec3<S>& dir,
-                                                Pcg32& rng) noexcept {
-    const Scattering<S> s = material.scattering(f.cos_i, f.entering);
+[[nodiscard]] PhotonScatter<S> russian_roulette(const Material<S>& material, const Scattering<S>& s, const Facing<S>& f,
+                                                const Vec3<S>& dir, Pcg32& rng) noexcept {
     const S pd = average(s.diffuse), ps = average(s.specular), pt = average(s.transmission);
     const S psi = rng.uniform<S>();
     const Vec2<S> u = rng.uniform2<S>();
@@ -60,6 +60,13 @@ template <Scalar S>
         return {ScatterEvent::specular, reflect(dir, f.normal), s.transmission / pt};
     }
     return {};
+}
+
+/// Russian roulette at hit point `x`, where a textured material's reflectance is read.
+template <Scalar S>
+[[nodiscard]] PhotonScatter<S> russian_roulette(const Material<S>& material, const Vec3<S>& x, const Facing<S>& f,
+                                                const Vec3<S>& dir, Pcg32& rng) {
+    return russian_roulette(material, material.scattering(x, f.cos_i, f.entering), f, dir, rng);
 }
 
 }  // namespace photon

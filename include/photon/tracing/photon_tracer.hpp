@@ -187,7 +187,7 @@ void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const Phot
             }
             if (unaimed && kind == PathKind::caustic) block.unaimed_caustics.push_back(photon);
         }
-        const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, rng);
+        const PhotonScatter<S> s = russian_roulette(material, surface->hit.point, f, ray.direction, rng);
         if (s.event == ScatterEvent::absorbed) return;
         if (s.event == ScatterEvent::diffuse) {
             if (caustic_only) return;

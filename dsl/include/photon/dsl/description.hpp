@@ -18,6 +18,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -97,8 +98,37 @@ struct Transform {
     friend bool operator==(const Transform&, const Transform&) = default;
 };
 
+/// The patterns whose values photon evaluates at each point (the rest are averaged with a warning).
+inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient", "bozo",   "spotted", "granite",   "marble",
+                                                     "wood",    "agate",    "onion",  "leopard", "radial",    "ripples",
+                                                     "waves",   "spherical", "planar", "boxed",  "cylindrical"};
+
+/// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
+/// photon::Pigment (texture/pattern.hpp gives each field's meaning).
+struct PigmentPattern {
+    std::string name;                ///< one of evaluated_patterns
+    Vector3 gradient{1, 0, 0};       ///< `gradient V`
+    double agate_turb = 1;           ///< `agate_turb`
+    Vector3 turbulence{0.0};         ///< `turbulence`
+    int octaves = 6;
+    double omega = 0.5, lambda = 2;
+    int noise_generator = 0;         ///< 0: the scene's (POV-Ray's default, 2)
+    std::string wave;                ///< `ramp_wave`, `sine_wave`, ...; empty: the pattern's default
+    double frequency = 1, phase = 0, exponent = 1;
+    /// The colours the value picks: the color_map as written, POV-Ray's default map, or for
+    /// checker its two colours at 0 and 1.
+    std::vector<std::pair<double, Color>> colors;
+
+    friend bool operator==(const PigmentPattern&, const PigmentPattern&) = default;
+};
+
 struct Pigment {
-    Color color;  ///< POV-Ray's default pigment is black
+    Color color;  ///< POV-Ray's default pigment is black; a patterned pigment's average colour
+    /// The pattern photon evaluates at each point; null for one colour everywhere.
+    std::shared_ptr<const PigmentPattern> pattern;
+    /// The pigment's transformations, then those of its texture and of the object written after
+    /// it (POV-Ray moves a texture with its object): pattern space to the object's parent's space.
+    Transform transform;
     SourceLocation at;
 };
 

@@ -147,6 +147,43 @@ private:
              << (l.photon_area_light ? " area_light" : "") << " }\n";
     }
 
+    [[nodiscard]] static std::string rgbft(const Color& c) {
+        return "rgbft <" + num(c.rgb.x) + ", " + num(c.rgb.y) + ", " + num(c.rgb.z) + ", " + num(c.filter) + ", " +
+               num(c.transmit) + ">";
+    }
+
+    /// An evaluated pattern with every modifier that differs from POV-Ray's default, its colours
+    /// and its transformation.
+    void pigment_pattern(const PigmentPattern& p, const Transform& placement) {
+        static const PigmentPattern pov;
+        out_ << "pigment { " << p.name;
+        if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
+        if (p.name == "checker") {
+            out_ << ' ' << rgbft(p.colors[0].second) << ", " << rgbft(p.colors[1].second);
+        } else {
+            out_ << " color_map {";
+            for (const auto& [v, c] : p.colors) out_ << " [" << num(v) << ' ' << rgbft(c) << ']';
+            out_ << " }";
+        }
+        if (p.turbulence != pov.turbulence) out_ << " turbulence " << vec(p.turbulence);
+        if (p.octaves != pov.octaves) out_ << " octaves " << p.octaves;
+        if (p.omega != pov.omega) out_ << " omega " << num(p.omega);
+        if (p.lambda != pov.lambda) out_ << " lambda " << num(p.lambda);
+        if (p.agate_turb != pov.agate_turb) out_ << " agate_turb " << num(p.agate_turb);
+        if (p.noise_generator != pov.noise_generator) out_ << " noise_generator " << p.noise_generator;
+        if (p.frequency != pov.frequency) out_ << " frequency " << num(p.frequency);
+        if (p.phase != pov.phase) out_ << " phase " << num(p.phase);
+        if (!p.wave.empty()) out_ << ' ' << p.wave;
+        if (p.wave == "poly_wave") out_ << ' ' << num(p.exponent);
+        if (!placement.is_identity()) {
+            const auto m = placement.pov_matrix();
+            out_ << " matrix <";
+            for (std::size_t i = 0; i < 12; ++i) out_ << (i ? ", " : "") << num(m[i]);
+            out_ << '>';
+        }
+        out_ << " }\n";
+    }
+
     void texture(const Texture& t, int level) {
         static const Finish pov;  // POV-Ray's built-in defaults
         const Finish& f = t.finish;
@@ -154,8 +191,10 @@ private:
         indent(level);
         out_ << "texture {\n";
         indent(level + 1);
-        out_ << "pigment { rgbft <" << num(c.rgb.x) << ", " << num(c.rgb.y) << ", " << num(c.rgb.z) << ", "
-             << num(c.filter) << ", " << num(c.transmit) << "> }\n";
+        if (t.pigment.pattern)
+            pigment_pattern(*t.pigment.pattern, t.pigment.transform);
+        else
+            out_ << "pigment { " << rgbft(c) << " }\n";
         indent(level + 1);
         out_ << "finish {";
         if (f.ambient != pov.ambient) out_ << " ambient rgb " << vec(f.ambient);
@@ -244,8 +283,10 @@ private:
             out_ << (u.merge ? "merge" : "union") << " {\n";
             for (const auto& child : u.children) object(*child, level + 1);
         }
-        if (!std::holds_alternative<LightSource>(o.shape)) modifiers(o, level + 1);
+        // The transformation first: POV-Ray would move a texture written before it with the object,
+        // and the pigment's own transformation already includes the object's written after it.
         transform(o.transform, level + 1);
+        if (!std::holds_alternative<LightSource>(o.shape)) modifiers(o, level + 1);
         indent(level);
         out_ << "}\n";
         if (level == 0) out_ << '\n';

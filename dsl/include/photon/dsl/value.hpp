@@ -84,6 +84,7 @@ struct BlendMap {
     std::string keyword;
     std::vector<std::pair<double, Color>> entries;
     std::optional<Finish> finish;
+    bool reduced = false;  ///< an entry was a patterned pigment or texture, kept as its average colour
 };
 
 /// A declared block photon reads but does not render (`fog`, `media`, `normal`, `sky_sphere`, ...).

@@ -10,12 +10,15 @@
 #include "../description.hpp"
 #include "../physical_ranges.hpp"
 #include "../value.hpp"
+#include "pigment.hpp"
 #include "warnings.hpp"
 
 namespace photon::dsl {
 
 /// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
-/// (1 - filter - transmit); transmission = filter * pigment + transmit; mirror reflectance from
+/// (1 - filter - transmit) (for a patterned pigment, `diffuse` alone: the pattern's colours,
+/// library_pigment, carry the rest); transmission = filter * pigment + transmit, from a patterned
+/// pigment's average colour; mirror reflectance from
 /// `reflection`; `reflection { 0, 1 fresnel on }` with `conserve_energy` makes Fresnel glass;
 /// phong and phong_size carry over. Finish items photon does not render are reported to `warn`,
 /// as is a surface reflecting more than it receives, which is scaled down to conserve energy
@@ -36,7 +39,21 @@ template <Scalar S>
     if (!physical.message.empty()) warn(pigment_at, physical.message, "approximated pigment", "pigment");
     const Color& pc = physical.value;
     const double opacity = std::max(0.0, 1.0 - pc.filter - pc.transmit);
-    Vector3 diffuse = f.diffuse * pc.rgb * opacity;
+    const PigmentPattern* pattern = tex.pigment.pattern.get();
+    Vector3 diffuse = pattern ? Vector3(f.diffuse) : f.diffuse * pc.rgb * opacity;
+    // The brightest diffuse albedo anywhere, for the energy check.
+    const Vector3 diffuse_bound = pattern ? f.diffuse * max_albedo_color(*pattern) : diffuse;
+    if (pattern) {
+        for (const auto& [v, c] : pattern->colors)
+            if (c.filter != pc.filter || c.transmit != pc.transmit) {
+                warn(pigment_at,
+                     "the pattern's colours differ in filter or transmit: photon's transmission is the same "
+                     "everywhere, from their average (filter " + format_number(pc.filter) + ", transmit " +
+                         format_number(pc.transmit) + ")",
+                     "approximated pigment", "transmit");
+                break;
+            }
+    }
     Vector3 transmission = pc.filter * pc.rgb + Vector3(pc.transmit);
     Vector3 specular(0.0);
     bool fresnel = false;
@@ -96,11 +113,14 @@ template <Scalar S>
     constexpr const char* channel[] = {"red", "green", "blue"};
     int worst = 0;
     for (int c = 1; c < 3; ++c)
-        if (diffuse[c] + specular[c] + transmission[c] > diffuse[worst] + specular[worst] + transmission[worst]) worst = c;
-    const double sum = diffuse[worst] + specular[worst] + transmission[worst];
+        if (diffuse_bound[c] + specular[c] + transmission[c] >
+            diffuse_bound[worst] + specular[worst] + transmission[worst])
+            worst = c;
+    const double sum = diffuse_bound[worst] + specular[worst] + transmission[worst];
     if (sum > 1 + 1e-9) {
         warn(at,
-             std::string("the surface reflects more light than it receives: diffuse ") + format_number(diffuse[worst]) +
+             std::string("the surface reflects more light than it receives: diffuse ") +
+                 (pattern ? "(the pattern's brightest colour) " : "") + format_number(diffuse_bound[worst]) +
                  " + reflection " + format_number(specular[worst]) + " + transmission " +
                  format_number(transmission[worst]) + " = " + format_number(sum) + " > 1 in the " + channel[worst] +
                  " channel; photon scales its reflectances by 1/" + format_number(sum) + " to conserve energy",

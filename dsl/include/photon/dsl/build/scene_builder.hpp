@@ -94,14 +94,21 @@ private:
         const ObjectPhotons* photons = nullptr;
         bool no_shadow = false;
         Transform transform;
+        Transform texture_placement;  ///< the texture's pattern space to the world
     };
 
     void add(const Object& o, const Inherited& parent) {
         const Texture* inherited =
             parent.texture ? parent.texture : (o.default_texture ? &*o.default_texture : nullptr);
+        // A texture moves with the transformations written after it on its object (folded into
+        // its pigment's by the parser), and with those of the unions around that object.
+        const Transform placement = o.texture ? o.texture->pigment.transform.then(parent.transform)
+                                    : parent.texture ? parent.texture_placement
+                                    : o.default_texture ? o.default_texture->pigment.transform
+                                                        : Transform{};
         Inherited mine{o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                        o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                       o.transform.then(parent.transform)};
+                       o.transform.then(parent.transform), placement};
         if (const auto* l = std::get_if<LightSource>(&o.shape))
             return add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
         if (const auto* u = std::get_if<UnionShape>(&o.shape)) {
@@ -186,13 +193,16 @@ private:
     MaterialId material_for(const Inherited& in, const Object& o) {
         static const Texture pov_default{};
         const Texture& tex = in.texture ? *in.texture : pov_default;
-        const MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, warn_, o.at);
-        for (const auto& [params, id] : materials_)
-            if (same(params, p)) return id;
+        MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, warn_, o.at);
+        const PigmentPattern* pattern = tex.pigment.pattern.get();
+        const Transform placement = pattern ? in.texture_placement : Transform{};
+        for (const auto& m : materials_)
+            if (same(m.params, p) && m.pattern == pattern && m.placement == placement) return m.id;
         const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
         try {
+            if (pattern) p.diffuse_texture = AnyReflectanceField<S>(library_pigment<S>(*pattern, placement));
             const MaterialId id = scene_->add_material(Material<S>(p));
-            materials_.emplace_back(p, id);
+            materials_.push_back({p, pattern, placement, id});
             return id;
         } catch (const std::invalid_argument& e) {
             throw Error(at, e.what());
@@ -207,7 +217,13 @@ private:
     const SceneDescription& desc_;
     Warnings& warn_;
     DefaultScene<S>* scene_ = nullptr;
-    std::vector<std::pair<MaterialParams<S>, MaterialId>> materials_;
+    struct MadeMaterial {
+        MaterialParams<S> params;
+        const PigmentPattern* pattern;  ///< null: untextured
+        Transform placement;
+        MaterialId id;
+    };
+    std::vector<MadeMaterial> materials_;
     std::vector<SourceLocation> object_at_;
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them

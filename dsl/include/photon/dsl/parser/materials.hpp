@@ -5,6 +5,7 @@
 #include "degradation.hpp"
 #include "parser_class.hpp"
 #include "patterns.hpp"
+#include "pigment_pattern.hpp"
 
 namespace photon::dsl::detail {
 
@@ -40,12 +41,12 @@ inline Pigment Parser::parse_pigment(const Token& kw, Pigment p) {
 inline Pigment Parser::parse_pigment_body(const Token& kw, Pigment p) {
     p.at = kw.location;
     take_identifier(p, "a colour or a pigment identifier", true);
-    Transform ignored;
     PatternState st;
+    if (p.pattern) st.base = *p.pattern;
     for (;;) {
         const Token t = peek();
         if (t.is_symbol("}") || t.is_symbol("]")) break;
-        if (try_transform(ignored)) continue;
+        if (try_transform(p.transform)) continue;
         if (t.is_identifier("quick_color") || t.is_identifier("quick_colour")) {
             next();
             parse_color("the quick colour");
@@ -54,6 +55,7 @@ inline Pigment Parser::parse_pigment_body(const Token& kw, Pigment p) {
         if (parse_pattern_item(st)) continue;
         if (starts_expression(t) || t.is_identifier("color") || t.is_identifier("colour")) {
             p.color = parse_color("the colour of the pigment");
+            if (st.pattern.text.empty()) p.pattern = nullptr, st.base.reset();  // one colour everywhere now
             continue;
         }
         if (t.kind == TokenKind::identifier) {
@@ -63,15 +65,26 @@ inline Pigment Parser::parse_pigment_body(const Token& kw, Pigment p) {
         }
         break;
     }
+    if (st.base && st.pattern.text.empty() && modifies_pattern(st)) {  // `pigment { Declared turbulence 0.5 }`
+        st.pattern.text = st.base->name;
+        st.pattern.location = kw.location;
+    }
     if (!st.pattern.text.empty() || st.map) {
         const std::string name = st.pattern.text.empty() ? st.map->keyword : st.pattern.text;
         const SourceLocation at = st.pattern.text.empty() ? kw.location : st.pattern.location;
+        std::string why_not;
+        if (auto pattern = evaluated_pattern(st, why_not)) {
+            p.color = average_color(*pattern);
+            p.pattern = std::move(pattern);
+            return p;
+        }
+        p.pattern = nullptr;
         std::string how;
         p.color = pattern_average(st, p.color, how);
         degrade(at, degraded::approximated_pigment, name,
                 name == "image_map" ? "`image_map` is approximated by " + how
                                     : "`" + name + "` is approximated by " + how + ", " + describe_average(p.color) +
-                                          ": photon has no patterned pigments yet");
+                                          ": " + why_not);
     }
     return p;
 }
@@ -234,7 +247,6 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
     tex.at = kw.location;
     take_identifier(tex, "a texture identifier, `pigment` or `finish`");
     tex.at = kw.location;
-    Transform ignored;
     PatternState st;
     for (;;) {
         const Token t = peek();
@@ -272,7 +284,7 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
                 if (!st.finish) st.finish = x.finish;
             }
             close_block(t, "a `texture`");
-        } else if (parse_pattern_item(st) || try_transform(ignored)) {
+        } else if (parse_pattern_item(st) || try_transform(tex.pigment.transform)) {
             continue;
         } else {
             break;
@@ -291,6 +303,7 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
         } else {
             tex.pigment.color = pattern_average(st, tex.pigment.color, how);
         }
+        tex.pigment.pattern = nullptr;
         if (st.finish) tex.finish = *st.finish;
         if (st.map && st.map->finish) tex.finish = *st.map->finish;
         degrade(at, degraded::approximated_texture, name,

@@ -207,7 +207,12 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
     for (;;) {
         const Token t = peek();
         if (t.kind != TokenKind::identifier) return;
-        if (try_transform(obj.transform)) continue;
+        if (Transform step; try_transform(step)) {
+            // POV-Ray moves the texture already given with the object, not one given after.
+            obj.transform = obj.transform.then(step);
+            if (obj.texture) obj.texture->pigment.transform = obj.texture->pigment.transform.then(step);
+            continue;
+        }
         const std::string& w = t.text;
         if (w == "texture") {
             if (had_texture) {

@@ -314,10 +314,12 @@ private:
     // patterns.hpp
     struct PatternState;
     bool parse_pattern_item(PatternState& st);
-    Color parse_list_color(const std::string& what);
+    Color parse_list_color(const std::string& what, bool* patterned = nullptr);
     BlendMap parse_blend_map(const Token& kw);
     void parse_blend_entry_body(const Token& kw, BlendMap& map);
     Color pattern_average(const PatternState& st, const Color& fallback, std::string& how);
+    std::shared_ptr<const PigmentPattern> evaluated_pattern(const PatternState& st, std::string& why_not) const;
+    static bool modifies_pattern(const PatternState& st);
 
     // lights_camera.hpp
     Object parse_light(const Token& kw);

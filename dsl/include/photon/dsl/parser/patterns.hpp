@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Patterns photon reads but does not evaluate (checker, marble, image_map, ...), with their blend
-// maps (color_map, pigment_map, texture_map, ...) and wave modifiers. A patterned pigment or
-// texture becomes one colour: the pattern's average as POV-Ray would colour it (a listed
-// pattern's mean colour, a map's average over [0, 1] as POV-Ray interpolates it), said in a warning.
+// Patterns with their blend maps (color_map, pigment_map, texture_map, ...) and modifiers. A
+// pigment pattern photon evaluates (evaluated_patterns) keeps its modifiers for the build
+// (pigment_pattern.hpp); any other patterned pigment or texture becomes one colour: the pattern's
+// average as POV-Ray would colour it (a listed pattern's mean colour, a map's average over [0, 1]
+// as POV-Ray interpolates it), said in a warning. A patterned pigment records its average too.
 
 #include <cstdio>
 
@@ -38,6 +39,14 @@ struct Parser::PatternState {
     std::optional<BlendMap> map;
     Vector3 brick_size{8, 3, 4.5};  ///< POV-Ray's defaults
     double mortar = 0.5;
+    // What an evaluated pattern needs, as written (unset: the pattern's or the declared pigment's).
+    std::optional<PigmentPattern> base;  ///< a declared pigment's pattern this body modifies
+    std::optional<Vector3> gradient, turbulence;
+    std::optional<int> octaves, noise_generator;
+    std::optional<double> omega, lambda, frequency, phase, agate_turb, exponent;
+    std::string wave;                     ///< `sine_wave`, ... as written
+    std::vector<Token> unsupported;       ///< modifiers photon does not evaluate (warp, uv_mapping, ...)
+    bool reduced = false;  ///< a listed colour was itself patterned, and is reduced to its average
 };
 
 /// `rgb <r, g, b>` with three decimals, for messages.
@@ -114,20 +123,25 @@ inline std::vector<Color> default_listed_colors(const std::string& pattern) {
 }
 
 // LIST_ITEM: COLOR | pigment { PIGMENT } | PIGMENT_IDENT | texture { TEXTURE } | TEXTURE_IDENT
-inline Color Parser::parse_list_color(const std::string& what) {
+// `*patterned` is set when the item is a patterned pigment (its average colour is returned).
+inline Color Parser::parse_list_color(const std::string& what, bool* patterned) {
     const Token t = peek();
-    if (t.is_identifier("pigment")) return parse_pigment(next(), Pigment{}).color;
-    if (t.is_identifier("texture")) return parse_texture(next(), default_texture_).pigment.color;
+    auto color_of = [&](const Pigment& p) {
+        if (p.pattern && patterned) *patterned = true;
+        return p.color;
+    };
+    if (t.is_identifier("pigment")) return color_of(parse_pigment(next(), Pigment{}));
+    if (t.is_identifier("texture")) return color_of(parse_texture(next(), default_texture_).pigment);
     if (t.kind == TokenKind::identifier) {
         if (const Value* v = lookup(t.text)) {
             // Copied before next(), which may run a directive that changes the declarations.
             if (const auto* p = std::get_if<Pigment>(&v->data)) {
-                const Color c = p->color;
+                const Color c = color_of(*p);
                 next();
                 return c;
             }
             if (const auto* tx = std::get_if<Texture>(&v->data)) {
-                const Color c = tx->pigment.color;
+                const Color c = color_of(tx->pigment);
                 next();
                 return c;
             }
@@ -165,9 +179,10 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
                     next();
                 }
                 st.listed.push_back(tx.pigment.color);
+                st.reduced = st.reduced || tx.pigment.pattern != nullptr;
                 st.finish = tx.finish;
             } else {
-                st.listed.push_back(parse_list_color("a colour of `" + st.pattern.text + "`"));
+                st.listed.push_back(parse_list_color("a colour of `" + st.pattern.text + "`", &st.reduced));
             }
             optional_comma();
         }
@@ -210,7 +225,8 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
             const Nest nest(*this, t.location);
             skip_block(t);
         } else if (starts_expression(peek())) {  // gradient V, spiral1 N, julia V, N, slope V, F, F, ...
-            parse_expression_for("the value of `" + w + "`");
+            const Numeric n = parse_expression_for("the value of `" + w + "`");
+            if (w == "gradient") st.gradient = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
             while (accept_symbol(",")) parse_expression_for("the value of `" + w + "`");
         }
     } else if (w == "image_map") {
@@ -222,8 +238,18 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
     } else if (one_of(w, valued_modifiers)) {
         next();
         const Numeric n = parse_expression_for("the value of `" + w + "`");
+        const Vector3 v = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
         if (w == "mortar") st.mortar = n.at(0);
-        if (w == "brick_size") st.brick_size = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
+        if (w == "brick_size") st.brick_size = v;
+        if (w == "turbulence") st.turbulence = v;
+        else if (w == "octaves") st.octaves = int(std::lround(n.at(0)));
+        else if (w == "noise_generator") st.noise_generator = int(std::lround(n.at(0)));
+        else if (w == "omega") st.omega = n.at(0);
+        else if (w == "lambda") st.lambda = n.at(0);
+        else if (w == "frequency") st.frequency = n.at(0);
+        else if (w == "phase") st.phase = n.at(0);
+        else if (w == "agate_turb") st.agate_turb = n.at(0);
+        else st.unsupported.push_back(t);
     } else if ((w == "interior" || w == "exterior") && one_of(st.pattern.text, {"mandel", "julia", "magnet"})) {
         next();  // a fractal's colouring inside and outside the set: TYPE, FACTOR
         parse_float("the type of `" + w + "`");
@@ -231,11 +257,15 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         parse_float("the factor of `" + w + "`");
     } else if (w == "poly_wave") {
         next();
-        if (starts_expression(peek())) parse_float("the exponent of `poly_wave`");
+        st.wave = w;
+        if (starts_expression(peek())) st.exponent = parse_float("the exponent of `poly_wave`");
     } else if (one_of(w, bare_modifiers)) {
         next();
+        if (w.ends_with("_wave")) st.wave = w;
+        else if (w != "solid") st.unsupported.push_back(t);  // solid: crackle's, never evaluated
     } else if (w == "warp") {
         const Nest nest(*this, t.location);
+        st.unsupported.push_back(t);
         skip_block(next());
     } else {
         return false;
@@ -292,6 +322,7 @@ inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
     } else if (map.keyword == "pigment_map") {
         Pigment p = parse_pigment_body(open, Pigment{});
         map.entries.push_back({v, p.color});
+        map.reduced = map.reduced || p.pattern != nullptr;
     } else if (map.keyword == "texture_map") {
         Texture tex = parse_texture_body(open, default_texture_);
         map.entries.push_back({v, tex.pigment.color});

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// A pigment's pattern as the library's Pigment: its pattern and modifiers, its colours as diffuse
+// albedos (rgb times the opacity 1 - filter - transmit, as material_params reads a colour), and
+// its placement in the world.
+
+#include <algorithm>
+#include <string>
+
+#include <photon/texture/pigment.hpp>
+
+#include "../description.hpp"
+#include "../physical_ranges.hpp"
+
+namespace photon::dsl {
+
+[[nodiscard]] inline PatternKind pattern_kind(const std::string& name) {
+    static const std::pair<const char*, PatternKind> kinds[] = {
+        {"checker", PatternKind::checker},     {"gradient", PatternKind::gradient}, {"bozo", PatternKind::bozo},
+        {"spotted", PatternKind::spotted},     {"granite", PatternKind::granite},   {"marble", PatternKind::marble},
+        {"wood", PatternKind::wood},           {"agate", PatternKind::agate},       {"onion", PatternKind::onion},
+        {"leopard", PatternKind::leopard},     {"radial", PatternKind::radial},     {"ripples", PatternKind::ripples},
+        {"waves", PatternKind::waves},         {"spherical", PatternKind::spherical}, {"planar", PatternKind::planar},
+        {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}};
+    for (const auto& [n, k] : kinds)
+        if (name == n) return k;
+    throw std::invalid_argument("photon does not evaluate the pattern `" + name + "`");
+}
+
+/// The colour of a map entry as a diffuse albedo (before the finish's `diffuse` factor).
+[[nodiscard]] inline Vector3 albedo_color(const Color& c) {
+    const Color p = physical_pigment(c).value;
+    return p.rgb * std::max(0.0, 1.0 - p.filter - p.transmit);
+}
+
+/// The largest albedo_color of the pattern's colours, per channel.
+[[nodiscard]] inline Vector3 max_albedo_color(const PigmentPattern& p) {
+    Vector3 m(0.0);
+    for (const auto& [v, c] : p.colors) m = glm::max(m, albedo_color(c));
+    return m;
+}
+
+[[nodiscard]] inline Pattern library_pattern(const PigmentPattern& p) {
+    Pattern out = Pattern::of(pattern_kind(p.name));
+    out.gradient = p.gradient;
+    out.agate_turb = p.agate_turb;
+    out.turbulence = p.turbulence;
+    out.octaves = {.octaves = p.octaves, .omega = p.omega, .lambda = p.lambda};
+    if (p.noise_generator != 0) out.noise_generator = NoiseGenerator(p.noise_generator);
+    out.wave.frequency = p.frequency;
+    out.wave.phase = p.phase;
+    out.wave.exponent = p.exponent;
+    static const std::pair<const char*, WaveType> waves[] = {{"ramp_wave", WaveType::ramp},   {"sine_wave", WaveType::sine},
+                                                             {"triangle_wave", WaveType::triangle},
+                                                             {"scallop_wave", WaveType::scallop},
+                                                             {"cubic_wave", WaveType::cubic}, {"poly_wave", WaveType::poly}};
+    for (const auto& [n, w] : waves)
+        if (p.wave == n) out.wave.type = w;
+    return out;
+}
+
+/// The pigment's pattern as a library Pigment whose colours are albedos; `placement` maps the
+/// pattern's space to the world.
+template <Scalar S>
+[[nodiscard]] photon::Pigment<S> library_pigment(const PigmentPattern& p, const Transform& placement) {
+    std::vector<typename ColorMap<S>::Entry> entries;
+    for (const auto& [v, c] : p.colors) entries.push_back({v, Rgb<S>(albedo_color(c))});
+    Affine<double> a;
+    a.linear = placement.linear;
+    a.translation = placement.translation;
+    return photon::Pigment<S>(library_pattern(p), ColorMap<S>(std::move(entries)), a);
+}
+
+}  // namespace photon::dsl

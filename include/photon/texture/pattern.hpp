@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// POV-Ray 3.7's pigment patterns: a pattern maps a point of its own space to a value in [0, 1]
+// (checker to 0 or 1) that then picks a colour from a color_map. Each pattern is POV-Ray's formula
+// (source/backend/pattern/pattern.cpp, 3.7.0.10), with its turbulence and wave.
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+#include "../math/vec.hpp"
+#include "noise.hpp"
+#include "wave.hpp"
+
+namespace photon {
+
+enum class PatternKind : std::uint8_t {
+    checker, gradient, bozo, spotted, granite, marble, wood, agate, onion, leopard, radial, ripples, waves,
+    spherical, planar, boxed, cylindrical
+};
+
+/// One pattern with its modifiers, in POV-Ray's meaning and with its defaults.
+struct Pattern {
+    PatternKind kind = PatternKind::checker;
+    Vec3<double> gradient{1, 0, 0};  ///< `gradient` direction (its length does not matter: normalized, as POV-Ray does)
+    double agate_turb = 1.0;         ///< `agate_turb`
+    /// `turbulence`: displaces the point by dturbulence * amount before the pattern (marble and
+    /// wood instead use it in their own formula, as POV-Ray does). Zero: no turbulence.
+    Vec3<double> turbulence{0.0};
+    TurbulenceParams octaves{};
+    NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
+    Wave wave{};
+
+    /// A pattern with POV-Ray's defaults for its kind (marble and wood: triangle_wave).
+    [[nodiscard]] static Pattern of(PatternKind kind) noexcept {
+        Pattern p;
+        p.kind = kind;
+        if (kind == PatternKind::marble || kind == PatternKind::wood) p.wave.type = WaveType::triangle;
+        return p;
+    }
+    [[nodiscard]] bool has_turbulence() const noexcept { return turbulence != Vec3<double>(0.0); }
+    /// Patterns whose value is one of a few discrete ones (checker: 0 or 1); they take no wave.
+    [[nodiscard]] bool is_discrete() const noexcept { return kind == PatternKind::checker; }
+};
+
+namespace pattern_detail {
+
+/// POV-Ray's 10 wave sources for ripples and waves (Initialize_Waves), and their frequencies.
+struct WaveSources {
+    std::array<Vec3<double>, 10> source{};
+    std::array<double, 10> frequency{};
+    WaveSources() noexcept {
+        int state = -560851967;
+        for (int i = 0; i < 10; ++i) {
+            source[std::size_t(i)] = glm::normalize(pov_dnoise(Vec3<double>(double(i), 0.0, 0.0)));
+            frequency[std::size_t(i)] = double(noise_detail::pov_next(state)) * 0.000030518509476 + 0.01;
+        }
+    }
+};
+inline const WaveSources& wave_sources() noexcept {
+    static const WaveSources sources;
+    return sources;
+}
+
+/// The pattern's formula before its wave, at a point already turbulence-warped.
+inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_epsilon) noexcept {
+    switch (pat.kind) {
+    case PatternKind::checker: {
+        const double e = cell_epsilon;
+        const auto v = static_cast<long long>(std::floor(p.x + e) + std::floor(p.y + e) + std::floor(p.z + e));
+        return (v & 1) ? 1.0 : 0.0;
+    }
+    case PatternKind::gradient: {
+        const double length = glm::length(pat.gradient);
+        const double r = length > 0 ? glm::dot(p, pat.gradient) / length : 0.0;
+        return r > 1.0 ? std::fmod(r, 1.0) : r;
+    }
+    case PatternKind::bozo:
+    case PatternKind::spotted: return pov_noise(p, pat.noise_generator);
+    case PatternKind::granite: {
+        double value = 0, freq = 1;
+        for (int i = 0; i < 6; ++i, freq *= 2.0) {
+            const double n = pov_noise(p * 4.0 * freq, pat.noise_generator);
+            const double t = pat.noise_generator == NoiseGenerator::original ? std::fabs(0.5 - n)
+                                                                             : std::min(0.5, std::fabs(1.0 - 2.0 * n));
+            value += t / freq;
+        }
+        return value;
+    }
+    case PatternKind::marble:
+        return p.x + (pat.has_turbulence() ? pat.turbulence.x * pov_turbulence(p, pat.octaves, pat.noise_generator) : 0.0);
+    case PatternKind::wood: {
+        Vec3<double> q(p.x, p.y, 0.0);
+        if (pat.has_turbulence()) {
+            const Vec3<double> t = pov_dturbulence(p, pat.octaves);
+            q.x += pov_cycloidal((p.x + t.x) * pat.turbulence.x);
+            q.y += pov_cycloidal((p.y + t.y) * pat.turbulence.y);
+        }
+        return glm::length(q);
+    }
+    case PatternKind::agate: {
+        const double turb = pat.agate_turb * pov_turbulence(p, pat.octaves, pat.noise_generator);
+        const double n = 0.5 * (pov_cycloidal(1.3 * turb + 1.1 * p.z) + 1.0);
+        return n < 0.0 ? 0.0 : std::pow(std::min(1.0, n), 0.77);
+    }
+    case PatternKind::onion: return std::fmod(glm::length(p), 1.0);
+    case PatternKind::leopard: {
+        const double s = (std::sin(p.x) + std::sin(p.y) + std::sin(p.z)) / 3.0;
+        return s * s;
+    }
+    case PatternKind::radial:
+        if (std::fabs(p.x) < 0.001 && std::fabs(p.z) < 0.001) return 0.25;
+        return 0.25 + (std::atan2(p.x, p.z) + 3.14159265358979323846) / 6.28318530717958647692;
+    case PatternKind::ripples:
+    case PatternKind::waves: {
+        const WaveSources& w = wave_sources();
+        double sum = 0;
+        for (std::size_t i = 0; i < w.source.size(); ++i) {
+            double length = glm::length(p - w.source[i]);
+            if (length == 0.0) length = 1.0;
+            if (pat.kind == PatternKind::ripples)
+                sum += pov_cycloidal(length * pat.wave.frequency + pat.wave.phase);
+            else
+                sum += pov_cycloidal(length * pat.wave.frequency * w.frequency[i] + pat.wave.phase) / w.frequency[i];
+        }
+        const double mean = sum / double(w.source.size());
+        return pat.kind == PatternKind::ripples ? 0.5 * (1.0 + mean) : 0.2 * (2.5 + mean);
+    }
+    case PatternKind::spherical: return std::clamp(1.0 - glm::length(p), 0.0, 1.0);
+    case PatternKind::planar: return std::clamp(1.0 - std::fabs(p.y), 0.0, 1.0);
+    case PatternKind::boxed:
+        return std::clamp(1.0 - std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}), 0.0, 1.0);
+    case PatternKind::cylindrical: return std::clamp(1.0 - std::sqrt(p.x * p.x + p.z * p.z), 0.0, 1.0);
+    }
+    return 0.0;
+}
+
+}  // namespace pattern_detail
+
+/// The pattern's value at `p` (in the pattern's own space): POV-Ray's turbulence warp, its
+/// formula, then frequency, phase and wave (not for checker, whose 0 and 1 pick list entries).
+/// `cell_epsilon`: a point this close below a cell boundary of checker counts as inside the cell
+/// above (POV-Ray's 1e-10), so that a floor at y = 0 does not flicker between two cells with the
+/// rounding error of its hit points; single-precision hit points need a larger one (Pigment).
+[[nodiscard]] inline double evaluate(const Pattern& pat, Vec3<double> p, double cell_epsilon = 1.0e-10) noexcept {
+    if (pat.has_turbulence() && pat.kind != PatternKind::marble && pat.kind != PatternKind::wood)
+        p += pov_dturbulence(p, pat.octaves) * pat.turbulence;
+    const double raw = pattern_detail::raw_value(pat, p, cell_epsilon);
+    return pat.is_discrete() ? raw : pat.wave(raw);
+}
+
+}  // namespace photon

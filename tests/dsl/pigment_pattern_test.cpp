@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+// Patterned pigments in the scene language: read with their modifiers and transformations, moved
+// with their object as POV-Ray moves them, evaluated by the built material, checked for energy,
+// and written back by export-pov.
+
+#include <catch2/catch.hpp>
+
+#include "dsl_test_util.hpp"
+
+#include <optional>
+
+using namespace dsl_test;
+using Catch::Matchers::Contains;
+using photon::Rgb;
+using photon::Vec3;
+
+namespace {
+
+const char* const lit = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
+
+struct Built {
+    std::vector<dsl::Diagnostic> warnings;
+    std::optional<dsl::BuiltScene<double>> built;
+};
+Built build_text(const std::string& text) {
+    Built b;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(b.warnings);
+    const auto desc = dsl::parse_string(std::string(lit) + text, "test.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(b.warnings);
+    b.built.emplace(dsl::build<double>(desc, bo));
+    return b;
+}
+
+/// The diffuse albedo of object `i` at world point p.
+Rgb<double> albedo(const Built& b, std::uint32_t i, const Vec3<double>& p) {
+    return b.built->scene.material_of(i).diffuse_at(p);
+}
+
+}  // namespace
+
+TEST_CASE("a pattern's modifiers, colours and transformations are read", "[dsl][texture]") {
+    const Parsed p = parse(std::string(lit) +
+                           "sphere { 0, 1 pigment { marble turbulence 0.5 octaves 4 omega 0.6 lambda 2.2 "
+                           "frequency 2 phase 0.1 sine_wave noise_generator 3 "
+                           "color_map { [0 rgb 1] [0.5 rgbt <1, 0, 0, 0.5>] } scale 2 } }\n"
+                           "sphere { 0, 1 pigment { gradient <0, 3, 0> } }\n");
+    REQUIRE(p.warnings.empty());
+    const dsl::Pigment& m = p.desc.objects.at(1).texture->pigment;
+    REQUIRE(m.pattern);
+    CHECK(m.pattern->name == "marble");
+    CHECK(m.pattern->turbulence == dsl::Vector3(0.5));
+    CHECK(m.pattern->octaves == 4);
+    CHECK(m.pattern->omega == 0.6);
+    CHECK(m.pattern->lambda == 2.2);
+    CHECK(m.pattern->frequency == 2);
+    CHECK(m.pattern->phase == 0.1);
+    CHECK(m.pattern->wave == "sine_wave");
+    CHECK(m.pattern->noise_generator == 3);
+    REQUIRE(m.pattern->colors.size() == 2);
+    CHECK(m.pattern->colors[1].second.transmit == 0.5);
+    CHECK(m.transform == dsl::Transform::scale(dsl::Vector3(2)));
+    const dsl::Pigment& g = p.desc.objects.at(2).texture->pigment;
+    REQUIRE(g.pattern);
+    CHECK(g.pattern->gradient == dsl::Vector3(0, 3, 0));
+    CHECK(g.pattern->colors.size() == 2);  // POV-Ray's default map, black to white
+    CHECK(g.color.rgb == dsl::Vector3(0.5));
+}
+
+TEST_CASE("the built material evaluates the pattern where light meets it", "[dsl][texture]") {
+    const Built b = build_text("plane { y, 0 pigment { checker rgb 1, rgb <0, 0, 0.5> } finish { ambient 0 diffuse 0.5 } }\n"
+                               "plane { y, -1 pigment { gradient x color_map { [0 rgb 0] [1 rgb 0.8] } } "
+                               "finish { ambient 0 diffuse 1 } }\n");
+    INFO(all_messages(b.warnings));
+    CHECK(albedo(b, 0, {0.5, 0, 0.5}) == Rgb<double>(0.5));
+    CHECK(albedo(b, 0, {1.5, 0, 0.5}) == Rgb<double>(0, 0, 0.25));
+    CHECK(albedo(b, 0, {1.5, 0, 1.5}) == Rgb<double>(0.5));
+    CHECK(albedo(b, 1, {0.25, -1, 3}).x == Approx(0.2));
+    CHECK(albedo(b, 1, {1.75, -1, 3}).x == Approx(0.6));
+    CHECK(b.built->scene.material_of(0).is_textured());
+}
+
+TEST_CASE("a texture moves with the transformations written after it, as in POV-Ray", "[dsl][texture]") {
+    const Built b = build_text(
+        "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } translate x }\n"  // moved
+        "sphere { 0, 1 translate x pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } }\n"  // not moved
+        "union { sphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } } translate x }\n"
+        "union { sphere { 0, 1 } pigment { checker rgb 1, rgb 0 scale 2 } finish { ambient 0 diffuse 1 } "
+        "translate <2, 0, 0> }\n");
+    const Vec3<double> p(1.5, 0.1, 0.5);  // in cell (1, 0, 0) of the world, (0, 0, 0) one unit to the left
+    CHECK(albedo(b, 0, p) == Rgb<double>(1));
+    CHECK(albedo(b, 1, p) == Rgb<double>(0));
+    CHECK(albedo(b, 2, p) == Rgb<double>(1));
+    // The union's own texture, scaled by 2 and then moved by 2: world x 2.5 is pattern x 0.25.
+    CHECK(albedo(b, 3, {2.5, 0.1, 0.5}) == Rgb<double>(1));
+    CHECK(albedo(b, 3, {1.5, 0.1, 0.5}) == Rgb<double>(0));
+}
+
+TEST_CASE("a declared pigment's pattern takes further modifiers", "[dsl][texture]") {
+    const Parsed p = parse(std::string(lit) +
+                           "#declare P = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }\n"
+                           "sphere { 0, 1 pigment { P turbulence 0.3 scale 2 } }\n"
+                           "sphere { 0, 1 pigment { P rgb <1, 0, 0> } }\n");
+    const dsl::Pigment& a = p.desc.objects.at(1).texture->pigment;
+    REQUIRE(a.pattern);
+    CHECK(a.pattern->name == "bozo");
+    CHECK(a.pattern->turbulence == dsl::Vector3(0.3));
+    CHECK(a.pattern->colors.size() == 2);
+    CHECK(a.transform == dsl::Transform::scale(dsl::Vector3(2)));
+    CHECK_FALSE(p.desc.objects.at(2).texture->pigment.pattern);  // a colour after it: one colour
+}
+
+TEST_CASE("what photon cannot evaluate is averaged with a warning that says why", "[dsl][texture]") {
+    const Parsed p = parse(std::string(lit) +
+                           "sphere { 0, 1 pigment { bozo warp { turbulence 0.5 } } }\n"
+                           "sphere { 0, 1 pigment { gradient x uv_mapping } }\n"
+                           "sphere { 0, 1 pigment { crackle } }\n");
+    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:25 bozo", "4:25 gradient", "5:25 crackle"});
+    CHECK_THAT(all_messages(p.warnings), Contains("photon does not evaluate `warp` (at 3:30)"));
+    CHECK_THAT(all_messages(p.warnings), Contains("photon does not evaluate `uv_mapping`"));
+    for (std::size_t i = 1; i <= 3; ++i) CHECK_FALSE(p.desc.objects.at(i).texture->pigment.pattern);
+}
+
+TEST_CASE("a pattern's brightest colour is what the energy check scales", "[dsl][texture]") {
+    const Built b = build_text("sphere { 0, 1 pigment { checker rgb 1, rgb 0.2 } "
+                               "finish { ambient 0 diffuse 1 reflection 0.3 } }\n");
+    CHECK_THAT(all_messages(b.warnings), Contains("diffuse (the pattern's brightest colour) 1 + reflection 0.3"));
+    const auto& m = b.built->scene.material_of(0);
+    CHECK(m.diffuse_at({0.5, 0.5, 0.5}).x == Approx(1 / 1.3));
+    CHECK(m.diffuse_at({0.5, 0.5, 1.5}).x == Approx(0.2 / 1.3));
+    CHECK(m.params().specular.x == Approx(0.3 / 1.3));
+}
+
+TEST_CASE("export-pov writes a pattern back, and reading it gives the same pattern", "[dsl][texture]") {
+    const Parsed p = parse(std::string(lit) +
+                           "sphere { 0, 1 pigment { wood turbulence <0.1, 0.2, 0> octaves 3 frequency 2 cubic_wave "
+                           "color_map { [0 rgb 1] [0.5 rgb <1, 0, 0>] } rotate x * 90 scale 0.2 } "
+                           "finish { ambient 0 } translate <1, 2, 3> }\n"
+                           "box { 0, 1 pigment { checker rgb 1, rgb 0 } }\n");
+    const std::string pov = dsl::export_pov(p.desc);
+    INFO(pov);
+    const Parsed q = parse(pov);
+    REQUIRE(q.desc.objects.size() == p.desc.objects.size());
+    for (std::size_t i = 1; i < p.desc.objects.size(); ++i) {
+        const dsl::Pigment& a = p.desc.objects[i].texture->pigment;
+        const dsl::Pigment& c = q.desc.objects[i].texture->pigment;
+        REQUIRE(c.pattern);
+        CHECK(*a.pattern == *c.pattern);
+        CHECK(a.transform == c.transform);
+        CHECK(p.desc.objects[i].transform == q.desc.objects[i].transform);
+    }
+}
+
+TEST_CASE("examples/scenes/textures.pov builds without warnings, and exported it builds the same textures",
+          "[dsl][texture]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    const auto desc = dsl::parse_file(std::filesystem::path(PHOTON_SCENES_DIR) / "textures.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto a = dsl::build<double>(desc, bo);
+    INFO(all_messages(warnings));
+    CHECK(warnings.empty());
+    std::size_t textured = 0;
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i) textured += a.scene.material_of(i).is_textured();
+    CHECK(textured == 7);  // the floor, three walls and three balls; not the ceiling or the glass
+    const auto b = dsl::build<double>(dsl::parse_string(dsl::export_pov(desc), "exported.pov"));
+    REQUIRE(b.scene.objects().size() == a.scene.objects().size());
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i)
+        for (const Vec3<double>& p : {Vec3<double>(0.3, 0.01, -0.7), Vec3<double>(-1.21, 0.9, 0.4), Vec3<double>(0.6, 0.3, 0.4)}) {
+            INFO("object " << i);
+            const Rgb<double> x = a.scene.material_of(i).diffuse_at(p), y = b.scene.material_of(i).diffuse_at(p);
+            CHECK(glm::length(x - y) < 1e-9);
+        }
+}
