@@ -20,6 +20,8 @@
 #include <photon/math/frame.hpp>
 #include <photon/math/rng.hpp>
 #include <photon/math/sampling.hpp>
+#include <photon/plan/shape_facts.hpp>
+#include <photon/scene/scene.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -282,4 +284,45 @@ TEMPLATE_TEST_CASE("csg with many leaves: between successive hits the inside tes
     }
     CHECK(hits > 2000);
     CHECK(disagreements == 0);
+}
+
+TEST_CASE("csg in a scene: each leaf's own material, whole-object questions ask every part; plan facts",
+          "[geometry][csg]") {
+    DefaultScene<double> scene;
+    const MaterialId white = scene.add_material(Material<double>::lambertian(Rgb<double>(0.8)));
+    const MaterialId glass = scene.add_material(Material<double>::glass(1.5));
+    // A white box with a glass ball set into its top face: leaf 0 the box, leaf 1 the ball.
+    scene.add(DefaultCsg<double>::merge({Box<double>({-1, -1, -1}, {1, 1, 1}), Sphere<double>({0, 1, 0}, 0.5)}),
+              white, {}, {white, glass});
+    scene.commit();
+    auto hit = scene.intersect({{0, 5, 0}, {0, -1, 0}});
+    REQUIRE(hit);
+    CHECK(hit->hit.point.y == Approx(1.5));
+    CHECK(hit->material == &scene.materials()[glass]);
+    hit = scene.intersect({{0.8, 5, 0}, {0, -1, 0}});
+    REQUIRE(hit);
+    CHECK(hit->material == &scene.materials()[white]);
+    CHECK(scene.any_material_of(0, is_specular_material));
+    CHECK(scene.is_caustic_target(0));  // glass somewhere on it
+    CHECK_FALSE(scene.material_of(0).is_specular());
+    CHECK_THROWS_AS(scene.add(Sphere<double>({0, 0, 0}, 1), white, {}, {7}), std::invalid_argument);
+
+    using C = DefaultCsg<double>;
+    const C lens = C::intersection({Sphere<double>({0, 0, 0.5}, 1), Sphere<double>({0, 0, -0.5}, 1)});
+    CHECK(plan::is_convex_solid(lens));
+    CHECK(plan::shape_name(lens) == "intersection");
+    CHECK(plan::contains_ball(lens, Vec3<double>(0, 0, 0), 0.2));
+    CHECK_FALSE(plan::contains_ball(lens, Vec3<double>(0, 0, 0), 0.6));
+    CHECK(plan::is_convex_solid(C::intersection({Sphere<double>({0, 0, 0}, 1), Plane<double>({0, 1, 0}, 0)})));
+    const Transformed<Torus<double>> ring(Torus<double>(2, 1), Affine<double>::identity());
+    CHECK_FALSE(plan::is_convex_solid(C::intersection({ring, Sphere<double>({0, 0, 0}, 3)})));
+    const C holed = C::difference({Box<double>({-1, -1, -1}, {1, 1, 1}), Sphere<double>({0, 0, 0}, 0.5)});
+    CHECK_FALSE(plan::is_convex_solid(holed));
+    CHECK_FALSE(plan::contains_ball(holed, Vec3<double>(0, 0, 0), 0.1));
+    CHECK(plan::shape_name(holed) == "difference");
+    C inverse_lens = lens;
+    inverse_lens.invert();
+    CHECK_FALSE(plan::is_convex_solid(inverse_lens));
+    CHECK(plan::shape_name(inverse_lens) == "inverse intersection");
+    CHECK_FALSE(plan::is_flat(lens));
 }
