@@ -117,6 +117,10 @@ TEMPLATE_TEST_CASE("torus: the four crossings, hole, normals, tiny and huge scal
         REQUIRE(top);
         CHECK(top->normal.y == Approx(1).epsilon(tol<S>()));
     }
+    // Entering where the outer equator touches the bounding sphere (the solve starts there).
+    const auto equator = Torus<S>(2, S(0.5)).intersect({{-5, 0, S(0.5)}, {1, 0, 0}});
+    REQUIRE(equator);
+    CHECK(double(equator->point.x) == Approx(-std::sqrt(6.0)).epsilon(tol<S>()));
     CHECK_THROWS_AS(Torus<S>(0, 1), std::invalid_argument);
     CHECK_THROWS_AS(Torus<S>(1, -1), std::invalid_argument);
 }

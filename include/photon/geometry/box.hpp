@@ -28,6 +28,9 @@ public:
     [[nodiscard]] const Vec3<S>& max() const noexcept { return box_.max; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return box_; }
 
+    /// Solid: the closed box.
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept { return box_.contains(p); }
+
     /// Slab test (Kay and Kajiya). Returns the entry point, or the exit point for a ray that
     /// starts inside; the normal is that of the slab that decided t.
     [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept {

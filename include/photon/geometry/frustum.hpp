@@ -31,6 +31,16 @@ template <Scalar S> struct Frustum {
         return b.extend(circle_bounds(base + axis * length, axis, r_cap));
     }
 
+    /// Solid: height along the axis in [0, length], distance from the axis within the radius
+    /// there. The same closed solid when `open` (POV-Ray's inside test ignores `open` too).
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept {
+        const Vec3<S> o = p - base;
+        const S h = glm::dot(o, axis);
+        if (!(h >= S(0) && h <= length)) return false;
+        const S r = r_base + (r_cap - r_base) / length * h;
+        return length_squared(o - h * axis) <= r * r;
+    }
+
     /// Nearest hit with t in (0, ray.t_max). The lateral surface is |p - (p.a) a| = r_base + k h
     /// with h = p.a and k = (r_cap - r_base) / length, squared into a quadratic in t; each root
     /// counts when its h lies in [0, length]. Solved from an origin moved to the bounding
@@ -106,6 +116,7 @@ public:
     [[nodiscard]] bool open() const noexcept { return f_.open; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return f_.bounds(); }
     [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept { return f_.intersect(ray); }
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept { return f_.contains(p); }
 
 protected:
     /// Throws std::invalid_argument, naming `shape`, unless the points are finite and distinct.

@@ -29,6 +29,10 @@ public:
     [[nodiscard]] S offset() const noexcept { return offset_; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return BBox<S>::infinite(); }
 
+    /// Solid: the half-space below the plane (dot(p, normal) <= offset), as POV-Ray's; the
+    /// normal points out of it.
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept { return glm::dot(p, normal_) <= offset_; }
+
     [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept {
         const S denom = glm::dot(ray.direction, normal_);
         if (denom == S(0)) return std::nullopt;  // parallel: never hits, even when on the plane

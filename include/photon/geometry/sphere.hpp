@@ -24,6 +24,11 @@ public:
     [[nodiscard]] S radius() const noexcept { return radius_; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return {center_ - radius_, center_ + radius_}; }
 
+    /// Solid: the closed ball.
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept {
+        return length_squared(p - center_) <= radius_ * radius_;
+    }
+
     /// Roots of |o + t d - c|^2 = r^2, computed without cancellation: the discriminant from the
     /// distance between the centre and the ray's closest point (Hearn and Baker), the small root
     /// from c / q (Press et al.). See Haines et al., "Precision Improvements for Ray/Sphere

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -31,6 +32,12 @@ public:
         return {Vec3<S>(-outer, -minor_, -outer), Vec3<S>(outer, minor_, outer)};
     }
 
+    /// Solid: the points within `minor` of the circle of radius `major` in the xz plane.
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept {
+        const S ring = std::sqrt(p.x * p.x + p.z * p.z) - major_;
+        return ring * ring + p.y * p.y <= minor_ * minor_;
+    }
+
     /// The quartic (|q|^2 + R^2 - r^2)^2 = 4 R^2 (qx^2 + qz^2) along the ray, solved in double
     /// (also for float) by bracketing (polynomial_roots.hpp), after three steps that keep its
     /// coefficients well conditioned: the origin moves to where the ray enters the bounding
@@ -58,7 +65,11 @@ public:
         const std::array<double, 5> c{m * m - four_r2 * (p.x * p.x + p.z * p.z),
                                       4.0 * k * m - 2.0 * four_r2 * (p.x * u.x + p.z * u.z),
                                       4.0 * k * k + 2.0 * m - four_r2 * (u.x * u.x + u.z * u.z), 4.0 * k, 1.0};
-        const auto roots = detail::roots_in<4>(c, 0.0, hi);
+        // From a little before the sphere's entry: where the ray enters the torus exactly there
+        // (the outer equator touches the sphere), the rounded shift can pass the root.
+        const double slack = 64.0 * double(std::numeric_limits<S>::epsilon()) *
+                             (double(max_component(glm::abs(ray.origin))) / unit + 1.0);
+        const auto roots = detail::roots_in<4>(c, -slack, hi);
         for (std::size_t i = 0; i < roots.count; ++i) {
             const double local = roots.value[i];
             const S t = S(shift + local * unit / speed);

@@ -7,6 +7,7 @@
 
 #include "../math/transform.hpp"
 #include "primitive.hpp"
+#include "solid.hpp"
 
 namespace photon {
 
@@ -38,6 +39,13 @@ public:
             world.extend(to_world_.point(p));
         }
         return world;
+    }
+
+    /// Solid when the shape is: the point taken into the shape's space.
+    [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept
+        requires Solid<P>
+    {
+        return shape_.contains(to_local_.point(p));
     }
 
     [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept {

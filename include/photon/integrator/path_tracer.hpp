@@ -39,8 +39,8 @@ template <class SceneT> [[nodiscard]] std::string reference_blind_spot(const Sce
     bool point_light = false, specular = false, diffuse = false;
     for (const auto& light : scene.lights()) point_light = point_light || (light_radius(light) == 0 && !is_black(light_power(light)));
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
-        specular = specular || scene.material_of(i).is_specular();
-        diffuse = diffuse || scene.material_of(i).has_diffuse();
+        specular = specular || scene.any_material_of(i, is_specular_material);
+        diffuse = diffuse || scene.any_material_of(i, has_diffuse_material);
     }
     if (!point_light || !specular || !diffuse) return {};
     return "mode reference cannot see light from point lights through mirrors or glass onto diffuse surfaces "

@@ -153,7 +153,7 @@ template <class SceneT>
     const auto objects = scene.objects();
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
         const auto& o = objects[i];
-        if (std::int64_t(i) == self || !is_black(scene.material_of(i).params().transmission) || !o.options.casts_shadow)
+        if (std::int64_t(i) == self || scene.any_material_of(i, is_transmissive_material) || !o.options.casts_shadow)
             continue;
         const bool closed = std::visit([](const auto& s) { return plan::is_convex_solid(s); }, o.shape);
         if (closed && !scene.object_bounds(i).contains(eye) &&
@@ -217,8 +217,8 @@ template <class SceneT>
     // Surfaces.
     std::vector<std::uint32_t> diffuse, specular;
     for (std::uint32_t i = 0; i < objects.size(); ++i) {
-        if (scene.material_of(i).has_diffuse()) diffuse.push_back(i);
-        if (scene.material_of(i).is_specular()) specular.push_back(i);
+        if (scene.any_material_of(i, has_diffuse_material)) diffuse.push_back(i);
+        if (scene.any_material_of(i, is_specular_material)) specular.push_back(i);
     }
     const std::string no_light = lights.empty() ? "no light" : "no light sends any light to the scene";
 

@@ -14,6 +14,7 @@
 #include "../geometry/bbox.hpp"
 #include "../geometry/box.hpp"
 #include "../geometry/cone.hpp"
+#include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
 #include "../geometry/plane.hpp"
@@ -27,13 +28,31 @@ namespace photon::plan {
 
 template <class T> struct is_transformed : std::false_type {};
 template <class P> struct is_transformed<Transformed<P>> : std::true_type {};
+template <class T> struct is_csg : std::false_type {};
+template <Scalar S, class... L> struct is_csg<Csg<S, L...>> : std::true_type {};
+
+/// POV-Ray's name of a CSG operation.
+[[nodiscard]] inline const char* csg_op_name(CsgOp op) {
+    switch (op) {
+    case CsgOp::leaf: return "csg";
+    case CsgOp::merge: return "merge";
+    case CsgOp::intersection: return "intersection";
+    case CsgOp::difference: return "difference";
+    }
+    return "csg";
+}
 
 /// What the shape is called in the plan's reasons ("sphere", "transformed box"; "object" for a
 /// user's own primitive).
 template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) {
     using S = scalar_of<Shape>;
     if constexpr (is_transformed<Shape>::value) return "transformed " + shape_name(shape.shape());
-    else if constexpr (std::is_same_v<Shape, Sphere<S>>) return "sphere";
+    else if constexpr (is_csg<Shape>::value) {
+        const std::string op = shape.op() == CsgOp::leaf
+                                   ? std::visit([](const auto& leaf) { return shape_name(leaf); }, shape.leaves()[0])
+                                   : csg_op_name(shape.op());
+        return shape.inverted() ? "inverse " + op : op;
+    } else if constexpr (std::is_same_v<Shape, Sphere<S>>) return "sphere";
     else if constexpr (std::is_same_v<Shape, Plane<S>>) return "plane";
     else if constexpr (std::is_same_v<Shape, Box<S>>) return "box";
     else if constexpr (std::is_same_v<Shape, Triangle<S>>) return "triangle";
@@ -55,9 +74,23 @@ template <class Shape> [[nodiscard]] constexpr bool is_flat(const Shape& shape) 
 
 /// A sphere, a box, a closed cylinder or a closed cone (also transformed: an affine map keeps it
 /// convex and closed). A torus is neither convex nor flat; an open cylinder or cone is not closed.
+/// A CSG intersection of convex solids and half-spaces (planes) is one when it is bounded; any
+/// other CSG (a merge, a difference, an inverse) is not known to be.
 template <class Shape> [[nodiscard]] bool is_convex_solid(const Shape& shape) {
     using S = scalar_of<Shape>;
     if constexpr (is_transformed<Shape>::value) return is_convex_solid(shape.shape());
+    else if constexpr (is_csg<Shape>::value) {
+        if (shape.inverted()) return false;
+        if (shape.op() == CsgOp::leaf)
+            return std::visit([](const auto& leaf) { return is_convex_solid(leaf); }, shape.leaves()[0]);
+        if (shape.op() != CsgOp::intersection || !shape.bounds().is_finite()) return false;
+        for (const Shape& child : shape.children()) {
+            const bool half_space = child.op() == CsgOp::leaf && !child.inverted() &&
+                                    std::holds_alternative<Plane<S>>(child.leaves()[0]);
+            if (!half_space && !is_convex_solid(child)) return false;
+        }
+        return true;
+    }
     else if constexpr (std::is_same_v<Shape, Cylinder<S>> || std::is_same_v<Shape, TruncatedCone<S>>) return !shape.open();
     else return std::is_same_v<Shape, Sphere<S>> || std::is_same_v<Shape, Box<S>>;
 }
@@ -84,7 +117,15 @@ template <class Shape, Scalar S> [[nodiscard]] bool inside_by(const Shape& shape
 /// tested in its own space.
 template <class Shape, Scalar S>
 [[nodiscard]] bool contains_ball(const Shape& shape, const Vec3<S>& center, S radius) {
-    if constexpr (is_transformed<Shape>::value) {
+    if constexpr (is_csg<Shape>::value) {  // a leaf's answer; an intersection's if every child holds it
+        if (shape.inverted()) return false;
+        if (shape.op() == CsgOp::leaf)
+            return std::visit([&](const auto& leaf) { return contains_ball(leaf, center, radius); }, shape.leaves()[0]);
+        if (shape.op() != CsgOp::intersection) return false;
+        for (const Shape& child : shape.children())
+            if (!contains_ball(child, center, radius)) return false;
+        return true;
+    } else if constexpr (is_transformed<Shape>::value) {
         using Inner = std::remove_cvref_t<decltype(shape.shape())>;
         if constexpr (!std::is_same_v<Inner, Sphere<S>> && !std::is_same_v<Inner, Box<S>>) {
             return false;

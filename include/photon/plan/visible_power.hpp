@@ -79,7 +79,7 @@ template <class SceneT>
                     break;
                 }
                 const Facing<S> f = facing(surface->hit.normal, ray.direction);
-                const PhotonScatter<S> s = russian_roulette(material, f, ray.direction, rng);
+                const PhotonScatter<S> s = russian_roulette(material, surface->hit.point, f, ray.direction, rng);
                 if (s.event == ScatterEvent::absorbed) break;
                 weight *= double(average(s.weight));
                 const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;

@@ -14,6 +14,10 @@
 #include <vector>
 
 #include "../geometry/box.hpp"
+#include "../geometry/cone.hpp"
+#include "../geometry/csg.hpp"
+#include "../geometry/cylinder.hpp"
+#include "../geometry/torus.hpp"
 #include "../geometry/bvh.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/primitive.hpp"
@@ -41,12 +45,18 @@ struct ObjectOptions {
     bool casts_shadow = true;  ///< false: invisible to shadow rays (POV-Ray's no_shadow)
 };
 
-/// What a ray hit: the geometric hit, the object and its material.
+/// What a ray hit: the geometric hit, the object and its material (the material of the part hit,
+/// for an object whose parts have their own: a CSG's leaves, Scene::add).
 template <Scalar S> struct SurfaceHit {
     Hit<S> hit;
     std::uint32_t object = 0;
     const Material<S>* material = nullptr;
 };
+
+/// Predicates for Scene::any_material_of.
+inline constexpr auto is_specular_material = [](const auto& m) { return m.is_specular(); };
+inline constexpr auto has_diffuse_material = [](const auto& m) { return m.has_diffuse(); };
+inline constexpr auto is_transmissive_material = [](const auto& m) { return !is_black(m.params().transmission); };
 
 template <Scalar S, Primitive... Shapes> class Scene {
     static_assert(sizeof...(Shapes) > 0, "a Scene needs at least one shape type");
@@ -60,6 +70,9 @@ public:
         Shape shape;
         MaterialId material;
         ObjectOptions options;
+        /// Material of each part (Hit::part) where they differ from `material`; parts past
+        /// its end use `material`.
+        std::vector<MaterialId> part_materials;
     };
 
     /// Adds a material and returns its id.
@@ -67,11 +80,18 @@ public:
         materials_.push_back(material);
         return static_cast<MaterialId>(materials_.size() - 1);
     }
-    /// Adds an object; throws std::invalid_argument on an unknown material id.
-    std::uint32_t add(Shape shape, MaterialId material, ObjectOptions options = {}) {
+    /// Adds an object; throws std::invalid_argument on an unknown material id. A shape made of
+    /// parts (a Csg, whose hits name their leaf in Hit::part) may give each part its own
+    /// material in `part_materials` (POV-Ray's textured CSG children); parts without one use
+    /// `material`.
+    std::uint32_t add(Shape shape, MaterialId material, ObjectOptions options = {},
+                      std::vector<MaterialId> part_materials = {}) {
+        for (MaterialId id : part_materials)
+            if (id >= materials_.size())
+                throw std::invalid_argument("scene: material id " + std::to_string(id) + " does not exist");
         if (material >= materials_.size())
             throw std::invalid_argument("scene: material id " + std::to_string(material) + " does not exist");
-        objects_.push_back({std::move(shape), material, options});
+        objects_.push_back({std::move(shape), material, options, std::move(part_materials)});
         committed_ = false;
         return static_cast<std::uint32_t>(objects_.size() - 1);
     }
@@ -89,8 +109,22 @@ public:
     [[nodiscard]] std::span<const Object> objects() const noexcept { return objects_; }
     [[nodiscard]] std::span<const Material<S>> materials() const noexcept { return materials_; }
     [[nodiscard]] std::span<const Light<S>> lights() const noexcept { return lights_; }
+    /// The object's material (of its parts without their own, when it has parts).
     [[nodiscard]] const Material<S>& material_of(std::uint32_t object) const noexcept {
         return materials_[objects_[object].material];
+    }
+    /// The material of part `part` of the object (Hit::part).
+    [[nodiscard]] const Material<S>& material_of(std::uint32_t object, std::uint32_t part) const noexcept {
+        const auto& parts = objects_[object].part_materials;
+        return materials_[part < parts.size() ? parts[part] : objects_[object].material];
+    }
+    /// Whether `pred` holds for some material of the object (its own or a part's): what a
+    /// question about the whole object ("is it a mirror anywhere?") must ask.
+    template <class Pred> [[nodiscard]] bool any_material_of(std::uint32_t object, Pred pred) const {
+        if (pred(material_of(object))) return true;
+        for (MaterialId id : objects_[object].part_materials)
+            if (pred(materials_[id])) return true;
+        return false;
     }
     [[nodiscard]] BBox<S> object_bounds(std::uint32_t object) const {
         return std::visit([](const auto& shape) { return shape.bounds(); }, objects_[object].shape);
@@ -100,7 +134,7 @@ public:
     /// Whether caustic photons are aimed at `object`.
     [[nodiscard]] bool is_caustic_target(std::uint32_t object) const noexcept {
         const auto mode = objects_[object].options.caustic_target;
-        return mode == CausticTarget::on || (mode == CausticTarget::automatic && material_of(object).is_specular());
+        return mode == CausticTarget::on || (mode == CausticTarget::automatic && any_material_of(object, is_specular_material));
     }
 
     /// Nearest hit with t in (0, ray.t_max).
@@ -137,10 +171,17 @@ private:
     bool committed_ = false;
 };
 
+/// The CSG trees the scene language builds: their leaves are the library's solids, placed
+/// directly where the transformation allows, else Transformed.
+template <Scalar S>
+using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCone<S>, Transformed<Sphere<S>>,
+                       Transformed<Box<S>>, Transformed<Cylinder<S>>, Transformed<TruncatedCone<S>>,
+                       Transformed<Torus<S>>>;
+
 /// The shapes the scene language builds; user programs may list their own instead.
 template <Scalar S>
 using DefaultScene = Scene<S, Sphere<S>, Plane<S>, Box<S>, Triangle<S>, TriangleMesh<S>, Transformed<Sphere<S>>,
-                           Transformed<Box<S>>>;
+                           Transformed<Box<S>>, DefaultCsg<S>>;
 
 template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhConfig config) {
     std::vector<BBox<S>> boxes;
@@ -186,7 +227,7 @@ std::optional<SurfaceHit<S>> Scene<S, Shapes...>::intersect(const Ray<S>& ray) c
         return true;
     });
     if (!best) return std::nullopt;
-    return SurfaceHit<S>{*best, best_object, &material_of(best_object)};
+    return SurfaceHit<S>{*best, best_object, &material_of(best_object, best->part)};
 }
 
 template <Scalar S, Primitive... Shapes> bool Scene<S, Shapes...>::occluded(const Ray<S>& ray) const {

@@ -164,7 +164,7 @@ inline constexpr const char* unaimed_caustics_warning =
 template <class SceneT> [[nodiscard]] std::vector<std::uint32_t> unaimed_specular_objects(const SceneT& scene) {
     std::vector<std::uint32_t> ids;
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i)
-        if (scene.material_of(i).is_specular() && !is_aimable_target(scene, i)) ids.push_back(i);
+        if (scene.any_material_of(i, is_specular_material) && !is_aimable_target(scene, i)) ids.push_back(i);
     return ids;
 }
 

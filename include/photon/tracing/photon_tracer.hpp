@@ -231,8 +231,8 @@ template <class SceneT>
 template <class SceneT> [[nodiscard]] bool scene_has_caustics(const SceneT& scene) {
     bool specular = false, diffuse = false;
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
-        specular = specular || scene.material_of(i).is_specular();
-        diffuse = diffuse || scene.material_of(i).has_diffuse();
+        specular = specular || scene.any_material_of(i, is_specular_material);
+        diffuse = diffuse || scene.any_material_of(i, has_diffuse_material);
     }
     return specular && diffuse && detail::has_emitting_light(scene.lights());
 }

@@ -234,11 +234,19 @@ struct MeshShape {
     std::shared_ptr<const std::vector<std::array<Vector3, 3>>> triangles;  ///< written in the mesh
     std::optional<MeshFile> file;  ///< an OBJ file whose triangles come before them
 };
-/// `union` (or `merge`): the children, each with its own modifiers. Children are shared, not
-/// copied, when a declared object is used again (`object { Name }`), so repeated use stays cheap.
+/// `union`: the children, each with its own modifiers. Children are shared, not copied, when a
+/// declared object is used again (`object { Name }`), so repeated use stays cheap.
 struct UnionShape {
     std::vector<std::shared_ptr<const Object>> children;
-    bool merge = false;
+};
+
+/// POV-Ray's CSG: `difference` (the first child minus the others), `intersection` (inside every
+/// child) and `merge` (a union without inner surfaces), children shared as in UnionShape. Built
+/// as one library Csg object (build/scene_builder.hpp) whose leaves keep their own textures.
+struct CsgShape {
+    enum class Operation : std::uint8_t { difference, intersection, merge };
+    Operation operation = Operation::merge;
+    std::vector<std::shared_ptr<const Object>> children;
 };
 
 /// An object photon reads but cannot render (a cylinder, a difference, a blob, ...): kept in the
@@ -247,8 +255,8 @@ struct SkippedShape {
     std::string keyword;  ///< POV-Ray's keyword, `cylinder`
 };
 
-using Shape =
-    std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource, SkippedShape>;
+using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
+                           SkippedShape, CsgShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -258,7 +266,13 @@ struct Object {
     std::optional<Interior> interior;
     std::optional<ObjectPhotons> photons;
     bool no_shadow = false;
-    Transform transform;         ///< applied to the shape (and to every child of a union)
+    /// POV-Ray's `inverse`: inside and outside swap (for CSG, and for refraction: a glass object
+    /// inverted is a bubble of air in glass).
+    bool inverse = false;
+    /// POV-Ray's `hollow`: kept for export; it matters only for media and fog, which photon does
+    /// not render, so it changes nothing.
+    std::optional<bool> hollow;
+    Transform transform;         ///< applied to the shape (and to every child of a union or CSG)
     std::size_t primitives = 1;  ///< shapes and triangles below this object, for the size bound
     /// Texture for the parts that have none, here or in an enclosing union: the `#default`
     /// texture when this top-level statement ended (POV-Ray's rule).
@@ -267,11 +281,17 @@ struct Object {
     SourceLocation at;
 };
 
+/// POV-Ray's name of a CSG operation.
+[[nodiscard]] inline const char* keyword(CsgShape::Operation op) noexcept {
+    constexpr const char* names[] = {"difference", "intersection", "merge"};
+    return names[static_cast<int>(op)];
+}
+
 /// POV-Ray's keyword for the shape of an object (`sphere`, `union`, `light_source`, ...).
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere", "box", "plane", "triangle", "mesh", "union", "light_source"};
-    if (s.index() == 5 && std::get<UnionShape>(s).merge) return "merge";
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
+    if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);
     return names[s.index()];
 }
 

@@ -247,6 +247,8 @@ private:
             out_ << " }\n";
         }
         if (o.no_shadow) indent(level), out_ << "no_shadow\n";
+        if (o.inverse) indent(level), out_ << "inverse\n";
+        if (o.hollow) indent(level), out_ << "hollow " << on_off(*o.hollow) << '\n';
         for (const auto& [name, at] : o.ignored) indent(level), out_ << name << '\n';
     }
 
@@ -278,9 +280,12 @@ private:
                     out_ << "triangle { " << vec(tri[0]) << ", " << vec(tri[1]) << ", " << vec(tri[2]) << " }\n";
                 }
             }
+        } else if (const auto* c = std::get_if<CsgShape>(&o.shape)) {
+            out_ << keyword(c->operation) << " {\n";
+            for (const auto& child : c->children) object(*child, level + 1);
         } else {
             const auto& u = std::get<UnionShape>(o.shape);
-            out_ << (u.merge ? "merge" : "union") << " {\n";
+            out_ << "union {\n";
             for (const auto& child : u.children) object(*child, level + 1);
         }
         // The transformation first: POV-Ray would move a texture written before it with the object,

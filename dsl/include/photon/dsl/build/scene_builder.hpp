@@ -3,7 +3,10 @@
 // The objects of a SceneDescription added to a DefaultScene: unions flattened with their modifiers
 // inherited, each shape placed by its transformation (kept as the library's own shape where the
 // transformation allows, wrapped in Transformed otherwise), materials shared between equal textures.
+// A CSG (difference, intersection, merge) becomes one DefaultCsg object whose leaves are its solid
+// children, each leaf with the material of its own texture (or the one it inherits).
 
+#include <algorithm>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -80,6 +83,8 @@ public:
             if (const auto* m = std::get_if<MeshShape>(&o.shape); m && m->file) (void)mesh_files_.triangles(*m->file);
             if (const auto* u = std::get_if<UnionShape>(&o.shape))
                 for (const auto& child : u->children) visit(*child);
+            if (const auto* c = std::get_if<CsgShape>(&o.shape))
+                for (const auto& child : c->children) visit(*child);
         };
         for (const Object& o : desc_.objects) visit(o);
     }
@@ -97,7 +102,7 @@ private:
         Transform texture_placement;  ///< the texture's pattern space to the world
     };
 
-    void add(const Object& o, const Inherited& parent) {
+    static Inherited inherit(const Object& o, const Inherited& parent) {
         const Texture* inherited =
             parent.texture ? parent.texture : (o.default_texture ? &*o.default_texture : nullptr);
         // A texture moves with the transformations written after it on its object (folded into
@@ -106,12 +111,19 @@ private:
                                     : parent.texture ? parent.texture_placement
                                     : o.default_texture ? o.default_texture->pigment.transform
                                                         : Transform{};
-        Inherited mine{o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
-                       o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                       o.transform.then(parent.transform), placement};
+        return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
+                o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
+                o.transform.then(parent.transform), placement};
+    }
+
+    void add(const Object& o, const Inherited& parent) {
+        const Inherited mine = inherit(o, parent);
         if (const auto* l = std::get_if<LightSource>(&o.shape))
             return add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
         if (const auto* u = std::get_if<UnionShape>(&o.shape)) {
+            if (o.inverse)
+                warn_(o.at, "`inverse` on a `union` is ignored: photon adds a union's objects one by one",
+                      "ignored effect", "inverse");
             for (const auto& child : u->children) add(*child, mine);
             return;
         }
@@ -119,8 +131,24 @@ private:
             ++skipped_;
             return;
         }
+        if (std::holds_alternative<CsgShape>(o.shape)) return add_csg(o, mine);
+        if (o.inverse) {
+            if (std::visit([](const auto& s) { return is_solid_shape(s); }, o.shape)) return add_csg(o, mine);
+            warn_(o.at, std::string("`inverse` on a `") + keyword(o.shape) + "` is ignored: it has no inside",
+                  "ignored effect", "inverse");
+        }
         try {
             const MaterialId material = material_for(mine, o);
+            const ObjectOptions options = options_for(mine, material);
+            const Transform& t = mine.transform;
+            std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
+            object_at_.resize(scene_->objects().size(), o.at);
+        } catch (const std::invalid_argument& e) {
+            throw Error(o.at, e.what());
+        }
+    }
+
+    ObjectOptions options_for(const Inherited& mine, MaterialId material) {
             ObjectOptions options;
             options.casts_shadow = !mine.no_shadow;
             if (mine.photons) {
@@ -134,31 +162,148 @@ private:
                     warn_(ph.at, "photons `collect off` is ignored: photon stores photons on every diffuse surface");
                 if (ph.pass_through) warn_(ph.at, "photons `pass_through` is ignored by photon");
             }
-            const Transform& t = mine.transform;
-            std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
+            return options;
+    }
+
+    // CSG ------------------------------------------------------------------------------------
+
+    /// A CSG object (or a solid with `inverse`, a CSG of one leaf): one DefaultCsg, its leaves'
+    /// materials in leaf order. Lights among its children light the scene as in a union.
+    void add_csg(const Object& o, const Inherited& mine) {
+        try {
+            std::vector<MaterialId> parts;
+            std::optional<DefaultCsg<S>> tree = csg_node(o, mine, parts);
+            if (!tree) return;
+            if (tree->bounds().is_empty())
+                warn_(o.at, std::string("this `") + keyword(o.shape) + "` is empty (its objects do not overlap): nothing renders");
+            const MaterialId material = material_for(mine, o);
+            if (std::all_of(parts.begin(), parts.end(), [&](MaterialId m) { return m == material; })) parts.clear();
+            scene_->add(std::move(*tree), material, options_for(mine, material), std::move(parts));
             object_at_.resize(scene_->objects().size(), o.at);
         } catch (const std::invalid_argument& e) {
             throw Error(o.at, e.what());
         }
     }
 
-    void add_shape(const SphereShape& s, const Transform& t, MaterialId m, ObjectOptions opt) {
+    /// The tree of `o` (inherited modifiers already applied in `mine`), or nothing when it has no
+    /// solid to render (said where). Leaves append their materials to `parts` in leaf order.
+    std::optional<DefaultCsg<S>> csg_node(const Object& o, const Inherited& mine, std::vector<MaterialId>& parts) {
+        std::optional<DefaultCsg<S>> tree;
+        if (const auto* c = std::get_if<CsgShape>(&o.shape)) {
+            tree = csg_operation(o, *c, mine, parts);
+        } else if (const auto* u = std::get_if<UnionShape>(&o.shape)) {  // a merge inside a CSG
+            tree = csg_operation(o, CsgShape{CsgShape::Operation::merge, u->children}, mine, parts);
+        } else {
+            std::visit([&](const auto& shape) { tree = csg_leaf(shape, mine.transform); }, o.shape);
+            if (tree) parts.push_back(material_for(mine, o));
+        }
+        if (tree && o.inverse) tree->invert();
+        return tree;
+    }
+
+    std::optional<DefaultCsg<S>> csg_operation(const Object& o, const CsgShape& c, const Inherited& mine,
+                                               std::vector<MaterialId>& parts) {
+        using Op = CsgShape::Operation;
+        std::vector<DefaultCsg<S>> children;
+        for (std::size_t k = 0; k < c.children.size(); ++k) {
+            const Object& child = *c.children[k];
+            const Inherited theirs = inherit(child, mine);
+            if (const auto* l = std::get_if<LightSource>(&child.shape)) {
+                add_pov_light(*scene_, *l, theirs.transform, child.at, warn_);
+                continue;
+            }
+            if (std::holds_alternative<SkippedShape>(child.shape)) ++skipped_;  // the parser warned
+            if (auto tree = csg_node(child, theirs, parts)) {
+                children.push_back(std::move(*tree));
+                continue;
+            }
+            // A child with no inside: what it takes from the result cannot be known, except in a
+            // merge (it joins as in a union) or when it is cut away (it cuts nothing).
+            const bool decides = c.operation == Op::intersection || (c.operation == Op::difference && k == 0);
+            const std::string what = "`" + std::string(keyword(child.shape)) + "`";
+            if (std::holds_alternative<SkippedShape>(child.shape)) {
+                if (decides) {
+                    warn_(o.at, std::string("`") + keyword(c.operation) + "` is skipped: its " + what +
+                                    " decides its shape and photon skipped it",
+                          "skipped object", keyword(c.operation));
+                    return std::nullopt;
+                }
+                continue;
+            }
+            if (decides) {
+                warn_(child.at, what + " has no inside: the `" + keyword(c.operation) + "` is skipped",
+                      "skipped object", keyword(c.operation));
+                return std::nullopt;
+            }
+            if (c.operation == Op::merge) {
+                warn_(child.at, what + " in `merge` has no inside: it is added as in a `union` (its surfaces inside "
+                                       "the others stay)",
+                      "approximated object", "merge");
+                add(child, mine);
+            } else {
+                warn_(child.at, what + " in `difference` has no inside and cuts nothing: ignored",
+                      "approximated object", "difference");
+            }
+        }
+        if (children.empty()) return std::nullopt;
+        if (children.size() == 1) return std::move(children.front());
+        switch (c.operation) {
+        case Op::difference: return DefaultCsg<S>::difference(std::move(children));
+        case Op::intersection: return DefaultCsg<S>::intersection(std::move(children));
+        case Op::merge: break;
+        }
+        return DefaultCsg<S>::merge(std::move(children));
+    }
+
+    std::optional<DefaultCsg<S>> csg_leaf(const SphereShape& s, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(s, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
+    std::optional<DefaultCsg<S>> csg_leaf(const BoxShape& b, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(b, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
+    std::optional<DefaultCsg<S>> csg_leaf(const PlaneShape& p, const Transform& t) { return DefaultCsg<S>(place(p, t)); }
+    /// Not solids (no inside), or not shapes.
+    template <class Other> std::optional<DefaultCsg<S>> csg_leaf(const Other&, const Transform&) { return std::nullopt; }
+    /// The shapes csg_leaf makes a leaf of.
+    template <class Shape> static constexpr bool is_solid_shape(const Shape&) {
+        return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape>;
+    }
+
+    // Shapes ---------------------------------------------------------------------------------
+
+    /// The sphere placed: itself under a similarity, else Transformed; handed to `f`.
+    template <class F> void place(const SphereShape& s, const Transform& t, F&& f) {
         if (const auto scale = similarity_scale(t.linear))
-            scene_->add(Sphere<S>(Vec3<S>(t.point(s.center)), S(s.radius * *scale)), m, opt);
+            f(Sphere<S>(Vec3<S>(t.point(s.center)), S(s.radius * *scale)));
         else
-            scene_->add(Transformed<Sphere<S>>(Sphere<S>(Vec3<S>(s.center), S(s.radius)), to_affine<S>(t)), m, opt);
+            f(Transformed<Sphere<S>>(Sphere<S>(Vec3<S>(s.center), S(s.radius)), to_affine<S>(t)));
     }
-    void add_shape(const BoxShape& b, const Transform& t, MaterialId m, ObjectOptions opt) {
+    /// The box placed: itself when the map keeps axes, else Transformed; handed to `f`.
+    template <class F> void place(const BoxShape& b, const Transform& t, F&& f) {
         if (keeps_axes(t.linear))
-            scene_->add(Box<S>(Vec3<S>(t.point(b.corner1)), Vec3<S>(t.point(b.corner2))), m, opt);
+            f(Box<S>(Vec3<S>(t.point(b.corner1)), Vec3<S>(t.point(b.corner2))));
         else
-            scene_->add(Transformed<Box<S>>(Box<S>(Vec3<S>(b.corner1), Vec3<S>(b.corner2)), to_affine<S>(t)), m, opt);
+            f(Transformed<Box<S>>(Box<S>(Vec3<S>(b.corner1), Vec3<S>(b.corner2)), to_affine<S>(t)));
     }
-    void add_shape(const PlaneShape& p, const Transform& t, MaterialId m, ObjectOptions opt) {
+    Plane<S> place(const PlaneShape& p, const Transform& t) {
         const Vector3 n = glm::normalize(p.normal);
         const Vector3 world_n = glm::normalize(glm::transpose(glm::inverse(t.linear)) * n);
         const Vector3 point = t.point(n * p.distance);
-        scene_->add(Plane<S>(Vec3<S>(world_n), S(glm::dot(point, world_n))), m, opt);
+        return Plane<S>(Vec3<S>(world_n), S(glm::dot(point, world_n)));
+    }
+
+    void add_shape(const SphereShape& s, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(s, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    void add_shape(const BoxShape& b, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(b, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    void add_shape(const PlaneShape& p, const Transform& t, MaterialId m, ObjectOptions opt) {
+        scene_->add(place(p, t), m, opt);
     }
     void add_shape(const TriangleShape& tri, const Transform& t, MaterialId m, ObjectOptions opt) {
         scene_->add(Triangle<S>(Vec3<S>(t.point(tri.vertices[0])), Vec3<S>(t.point(tri.vertices[1])),
@@ -187,6 +332,7 @@ private:
         scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices)), m, opt);
     }
     void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
+    void add_shape(const CsgShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const LightSource&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const SkippedShape&, const Transform&, MaterialId, ObjectOptions) {}
 

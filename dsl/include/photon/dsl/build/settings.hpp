@@ -58,6 +58,8 @@ using SettingsOverrides = std::map<std::string, SettingValue, std::less<>>;
                 most = std::max(most, unsigned(l->area->size1 * l->area->size2));
             if (const auto* u = std::get_if<UnionShape>(&obj.shape))
                 for (const auto& c : u->children) visit(*c);
+            if (const auto* csg = std::get_if<CsgShape>(&obj.shape))
+                for (const auto& c : csg->children) visit(*c);
         };
         for (const Object& obj : desc.objects) visit(obj);
         if (most > 1) s.shadow_samples = most;

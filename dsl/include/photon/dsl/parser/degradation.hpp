@@ -30,14 +30,12 @@ inline void Parser::degrade(const SourceLocation& at, std::string_view kind, std
 
 /// What photon lacks, for "`x` is skipped: photon has no ... yet".
 inline std::string missing_shape(const std::string& keyword) {
-    if (keyword == "difference" || keyword == "intersection") return "CSG " + keyword;
     if (keyword == "text") return "text object";
     return keyword;
 }
 
 // SKIPPED_OBJECT: cylinder { V, V, F [open] MODS } | cone { V, F, V, F [open] MODS }
-//               | disc { V, V, F [, F] MODS } | torus { F, F MODS }
-//               | difference|intersection { OBJECT {OBJECT} MODS } | KEYWORD { balanced tokens }
+//               | disc { V, V, F [, F] MODS } | torus { F, F MODS } | KEYWORD { balanced tokens }
 inline Object Parser::parse_skipped_object(const Token& kw) {
     const std::string& w = kw.text;
     Object obj;
@@ -45,7 +43,7 @@ inline Object Parser::parse_skipped_object(const Token& kw) {
     obj.shape = SkippedShape{w};
     degrade(kw.location, degraded::skipped_object, w,
             "`" + w + "` is skipped: photon has no " + missing_shape(w) + " yet");
-    if (!one_of(w, {"cylinder", "cone", "disc", "torus", "difference", "intersection"})) {
+    if (!one_of(w, {"cylinder", "cone", "disc", "torus"})) {
         skip_block(kw);
         return obj;
     }
@@ -75,13 +73,6 @@ inline Object Parser::parse_skipped_object(const Token& kw) {
         parse_float("the major radius of the torus");
         optional_comma();
         parse_float("the minor radius of the torus");
-    } else {  // difference, intersection: their objects, each read (and skipped with this one)
-        std::size_t children = 0;
-        while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) {
-            parse_object(next());
-            ++children;
-        }
-        if (children == 0) fail_expected("an object in `" + w + "`", peek());
     }
     if (peek().is_identifier("open")) next();
     parse_modifiers(kw, obj);

@@ -60,7 +60,7 @@ inline Numeric Parser::parse_object_query(const Token& f) {
 [[nodiscard]] inline bool object_contains(const Object& o, const Vector3& world) {
     constexpr double tolerance = 1e-10;
     const Vector3 p = o.transform.inverse().point(world);
-    return std::visit(
+    const bool in = std::visit(
         [&](const auto& s) -> bool {
             using S = std::decay_t<decltype(s)>;
             if constexpr (std::is_same_v<S, SphereShape>) {
@@ -77,11 +77,28 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;
                 return false;
+            } else if constexpr (std::is_same_v<S, CsgShape>) {
+                using Op = CsgShape::Operation;
+                if (s.operation == Op::merge) {
+                    for (const auto& child : s.children)
+                        if (object_contains(*child, p)) return true;
+                    return false;
+                }
+                if (s.operation == Op::intersection) {
+                    for (const auto& child : s.children)
+                        if (!object_contains(*child, p)) return false;
+                    return true;
+                }
+                if (!object_contains(*s.children.front(), p)) return false;
+                for (std::size_t k = 1; k < s.children.size(); ++k)
+                    if (object_contains(*s.children[k], p)) return false;
+                return true;
             } else {
                 return false;
             }
         },
         o.shape);
+    return in != o.inverse;
 }
 
 // INSIDE: inside ( OBJECT_ID , VECTOR )

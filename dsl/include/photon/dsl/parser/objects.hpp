@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Objects: the shapes, union/merge, `object { }`, meshes and the object modifiers.
+// Objects: the shapes, union, CSG (difference, intersection, merge), `object { }`, meshes and the
+// object modifiers.
 
 #include "degradation.hpp"
 #include "parser_class.hpp"
@@ -19,7 +20,8 @@ inline void Parser::add_primitives(Object& obj, std::size_t n, const SourceLocat
              "the scene is too large: more than " + std::to_string(options_.max_primitives) + " objects and triangles");
 }
 
-// OBJECT: SHAPE { PARAMS MODIFIERS } | union|merge|light_group { ... } | object { OBJECT_ID|OBJECT MODIFIERS }
+// OBJECT: SHAPE { PARAMS MODIFIERS } | union|light_group { ... } | difference|intersection|merge { ... }
+//       | object { OBJECT_ID|OBJECT MODIFIERS }
 inline Object Parser::parse_object(const Token& kw) {
     const Nest nest(*this, kw.location);
     const std::string& w = kw.text;
@@ -86,14 +88,12 @@ inline Object Parser::parse_object(const Token& kw) {
         obj.shape = MeshShape{std::move(tris), std::move(file)};
     } else if (w == "mesh2") {
         obj.shape = parse_mesh2(kw, obj);
-    } else if (w == "union" || w == "merge" || w == "light_group") {
-        // UNION: union|merge { {OBJECT} MODIFIERS }
+    } else if (w == "difference" || w == "intersection" || w == "merge") {
+        obj.shape = parse_csg(kw, obj);
+    } else if (w == "union" || w == "light_group") {
+        // UNION: union { {OBJECT} MODIFIERS }
         // LIGHT_GROUP: light_group { {light_source | OBJECT | light_group | global_lights [BOOL]} MODIFIERS }
         UnionShape u;
-        u.merge = w == "merge";
-        if (u.merge)
-            degrade(kw.location, degraded::approximated_object, w,
-                    "`merge` is read as `union`: photon keeps the inner surfaces");
         if (w == "light_group")
             degrade(kw.location, degraded::approximated_light, w,
                     "`light_group` is read as a union: photon does not keep light groups apart, so its lights "
@@ -154,6 +154,26 @@ inline Object Parser::parse_object(const Token& kw) {
                 "matrix, no_shadow)",
                 modifier_keywords);
     return obj;
+}
+
+// CSG: difference|intersection|merge { OBJECT {OBJECT} MODIFIERS }
+// Children before the modifiers, as in a union; POV-Ray warns below two, photon too.
+inline CsgShape Parser::parse_csg(const Token& kw, Object& obj) {
+    CsgShape c;
+    const std::string& w = kw.text;
+    c.operation = w == "difference"     ? CsgShape::Operation::difference
+                  : w == "intersection" ? CsgShape::Operation::intersection
+                                        : CsgShape::Operation::merge;
+    obj.primitives = 0;
+    while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) {
+        const Token ck = next();
+        c.children.push_back(std::make_shared<const Object>(parse_object(ck)));
+        add_primitives(obj, c.children.back()->primitives, ck.location);
+    }
+    if (c.children.empty()) fail_expected("an object in `" + w + "`", peek());
+    if (c.children.size() == 1)  // as POV-Ray: "Should have at least 2 objects in csg"
+        warn(kw.location, "`" + w + "` with one object is that object alone");
+    return c;
 }
 
 // MESH_FILE: obj "file.obj"
@@ -245,12 +265,17 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         } else if (w == "no_shadow") {
             next();
             obj.no_shadow = true;
-        } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "inverse",
-                              "uv_mapping"})) {
+        } else if (w == "inverse") {
+            next();
+            obj.inverse = !obj.inverse;
+        } else if (w == "hollow") {
+            next();
+            obj.hollow = parse_optional_bool();
+        } else if (one_of(w, {"no_image", "no_reflection", "no_radiosity", "double_illuminate", "uv_mapping"})) {
             next();
             obj.ignored[w] = t.location;
             degrade(t.location, degraded::ignored_effect, w, "`" + w + "` is ignored by photon");
-        } else if (one_of(w, {"hollow", "sturm"})) {
+        } else if (w == "sturm") {
             next();
             parse_optional_bool();
         } else if (w == "inside_vector" && std::holds_alternative<MeshShape>(obj.shape)) {
@@ -263,7 +288,8 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
                     "`interior_texture` is ignored: photon uses one texture for both sides");
         } else if (w == "bounded_by" || w == "clipped_by") {
             parse_bound_or_clip(next());
-        } else if (is_object_keyword(w) && std::holds_alternative<UnionShape>(obj.shape)) {
+        } else if (is_object_keyword(w) &&
+                   (std::holds_alternative<UnionShape>(obj.shape) || std::holds_alternative<CsgShape>(obj.shape))) {
             fail(t.location,
                  "objects in `" + kw.text + "` must come before its modifiers: found `" + w + "` after a modifier");
         } else {

@@ -299,6 +299,7 @@ private:
     void parse_material(const Token& kw, Object& obj);
     void parse_modifiers(const Token& kw, Object& obj);
     ObjectPhotons parse_object_photons(const Token& kw);
+    CsgShape parse_csg(const Token& kw, Object& obj);
 
     // mesh2.hpp
     MeshShape parse_mesh2(const Token& kw, Object& obj);

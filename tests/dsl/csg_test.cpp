@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: MIT
+// CSG in the scene language: difference, intersection and merge with their children's own
+// modifiers, inverse and hollow (POV-Ray 3.7), built into one library Csg object whose leaves keep
+// their textures; children without an inside warn; inside() and trace() answer for CSG; export
+// writes it back for POV-Ray.
+
+#include <catch2/catch.hpp>
+
+#include "dsl_test_util.hpp"
+
+using namespace dsl_test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+const char* const lit = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
+
+struct Built {
+    dsl::SceneDescription desc;
+    std::vector<dsl::Diagnostic> warnings;
+    photon::DefaultScene<double> scene;
+};
+Built build_text(const std::string& text) {
+    Built b;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(b.warnings);
+    b.desc = dsl::parse_string(std::string(lit) + text, "test.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(b.warnings);
+    auto built = dsl::build<double>(b.desc, bo);
+    b.scene = std::move(built.scene);
+    b.scene.commit();
+    return b;
+}
+
+using Csg = photon::DefaultCsg<double>;
+
+const Csg& only_csg(const Built& b) {
+    REQUIRE(b.scene.objects().size() == 1);
+    const auto* c = std::get_if<Csg>(&b.scene.objects()[0].shape);
+    REQUIRE(c != nullptr);
+    return *c;
+}
+
+photon::Ray<double> ray(photon::Vec3<double> o, photon::Vec3<double> d) { return {o, d}; }
+
+}  // namespace
+
+TEST_CASE("difference, intersection and merge build one CSG object; children keep their own textures", "[dsl][csg]") {
+    const Built b = build_text("difference {\n"
+                               "  box { -1, 1 pigment { rgb <1, 0, 0> } }\n"
+                               "  sphere { 0, 0.5 pigment { rgb <0, 1, 0> } }\n"
+                               "  sphere { <0, 1, 0>, 0.25 }\n"
+                               "  pigment { rgb <0, 0, 1> }\n"
+                               "  translate <0, 0, 3>\n"
+                               "}\n");
+    CHECK(places(b.warnings, "approximated object").empty());
+    CHECK(places(b.warnings, "skipped object").empty());
+    const Csg& c = only_csg(b);
+    CHECK(c.op() == photon::CsgOp::difference);
+    CHECK(c.leaves().size() == 3);
+    CHECK(c.bounds().min.z == Approx(2));  // the first child's box, translated
+    // The outer face is the red box's; the hole's wall the green sphere's (normal into the hole).
+    auto hit = b.scene.intersect(ray({0, 0, -5}, {0, 0, 1}));
+    REQUIRE(hit);
+    CHECK(hit->hit.point.z == Approx(2));
+    CHECK(hit->material->params().diffuse.x > 0);
+    CHECK(hit->material->params().diffuse.y == 0);
+    hit = b.scene.intersect(ray({0, 0, 3}, {0, 0, 1}));
+    REQUIRE(hit);
+    CHECK(hit->hit.point.z == Approx(3.5));
+    CHECK(hit->hit.normal.z == Approx(-1));
+    CHECK(hit->material->params().diffuse.y > 0);
+    CHECK(hit->material->params().diffuse.x == 0);
+    // The third child has no texture: it takes the difference's blue (its cut in the box's top).
+    hit = b.scene.intersect(ray({0, 5, 3}, {0, -1, 0}));
+    REQUIRE(hit);
+    CHECK(hit->hit.point.y == Approx(0.75));
+    CHECK(hit->material->params().diffuse.z > 0);
+    CHECK(hit->material->params().diffuse.x == 0);
+
+    const Built i = build_text("intersection { sphere { <0, 0, 0.5>, 1 } sphere { <0, 0, -0.5>, 1 } }\n");
+    CHECK(only_csg(i).op() == photon::CsgOp::intersection);
+    hit = i.scene.intersect(ray({0, 0, -5}, {0, 0, 1}));
+    REQUIRE(hit);
+    CHECK(hit->hit.point.z == Approx(-0.5));
+
+    const Built m = build_text("merge { sphere { 0, 1 } sphere { x, 1 } pigment { rgb 1 } }\n");
+    CHECK(only_csg(m).op() == photon::CsgOp::merge);
+    CHECK(m.scene.objects()[0].part_materials.empty());  // one texture: no per-part materials
+    hit = m.scene.intersect(ray({0.5, 0, 0}, {1, 0, 0}));  // from inside: no inner wall at x = 1
+    REQUIRE(hit);
+    CHECK(hit->hit.point.x == Approx(2));
+}
+
+TEST_CASE("inverse and hollow as POV-Ray reads them", "[dsl][csg]") {
+    // intersection with an inverse is a difference.
+    const Built b = build_text("intersection { box { -1, 1 } sphere { 0, 0.5 inverse } }\n");
+    auto hit = b.scene.intersect(ray({0, 0, 0}, {1, 0, 0}));
+    REQUIRE(hit);
+    CHECK(hit->hit.point.x == Approx(0.5));
+    CHECK(hit->hit.normal.x == Approx(-1));
+    // A solid alone with inverse: a CSG of one leaf, its inside out (an air bubble in glass).
+    const Built bubble = build_text("sphere { 0, 1 inverse hollow pigment { rgbf 1 } interior { ior 1.5 } }\n");
+    const Csg& c = only_csg(bubble);
+    CHECK(c.inverted());
+    hit = bubble.scene.intersect(ray({0, 0, -5}, {0, 0, 1}));
+    REQUIRE(hit);
+    CHECK(hit->hit.normal.z == Approx(1));  // out of the glass, which is everything outside the ball
+    CHECK(bubble.desc.objects[1].hollow == true);
+    CHECK(places(bubble.warnings, "ignored effect").empty());
+    // Twice is none.
+    CHECK_FALSE(build_text("intersection { sphere { 0, 1 inverse inverse } box { -2, 2 } }\n").desc.objects[1].inverse);
+    const Built tri = build_text("triangle { 0, x, y inverse }\n");
+    CHECK(places(tri.warnings, "ignored effect") == std::vector<std::string>{"3:1 inverse"});
+    CHECK(tri.scene.objects().size() == 1);
+}
+
+TEST_CASE("CSG children without an inside, skipped children and lights", "[dsl][csg]") {
+    Built b = build_text("merge { sphere { 0, 1 } triangle { 0, x, y } light_source { <0, 3, 0>, 1 } }\n");
+    CHECK(places(b.warnings, "approximated object") == std::vector<std::string>{"3:25 merge"});
+    CHECK(b.scene.objects().size() == 2);  // the sphere as a CSG leaf, the triangle on its own
+    CHECK(b.scene.lights().size() == 2);
+    b = build_text("intersection { sphere { 0, 1 } mesh { triangle { 0, x, y } } }\n");
+    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:32 intersection"});
+    CHECK(b.scene.objects().empty());
+    b = build_text("difference { box { -1, 1 } triangle { 0, x, y } }\n");
+    CHECK(places(b.warnings, "approximated object") == std::vector<std::string>{"3:28 difference"});
+    CHECK(b.scene.objects().size() == 1);
+    // A child photon cannot read yet: cut away, it is missing (warned where it is); deciding, the
+    // whole CSG is skipped.
+    b = build_text("difference { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
+    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:28 blob"});
+    CHECK(b.scene.objects().size() == 1);
+    b = build_text("intersection { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
+    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:30 blob", "3:1 intersection"});
+    CHECK(b.scene.objects().empty());
+    b = build_text("intersection { sphere { -3*x, 1 } sphere { 3*x, 1 } }\n");
+    CHECK_THAT(all_messages(b.warnings), Contains("is empty (its objects do not overlap): nothing renders"));
+    CHECK_THAT(error_of("difference { }"), Contains("1:14: expected an object in `difference`"));
+    CHECK(error_of("merge { sphere { 0, 1 } pigment { rgb 1 } sphere { 0, 2 } }") ==
+          "1:43: objects in `merge` must come before its modifiers: found `sphere` after a modifier");
+    const Parsed one = parse("intersection { sphere { 0, 1 } }");
+    CHECK_THAT(all_messages(one.warnings), Contains("`intersection` with one object is that object alone"));
+}
+
+TEST_CASE("inside() and trace() answer for CSG; export writes it back", "[dsl][csg]") {
+    dsl::ParseOptions with_geometry;
+    with_geometry.geometry = dsl::library_object_geometry();
+    const Parsed p = parse("#declare Holed = difference { box { -1, 1 } sphere { 0, 0.5 } translate x }\n"
+                           "#declare A = inside(Holed, <1, 0, 0>);\n"
+                           "#declare B = inside(Holed, <1.8, 0, 0>);\n"
+                           "#declare N = <0, 0, 0>;\n"
+                           "#declare P = trace(Holed, <1, 0, 0>, x, N);\n"
+                           "sphere { <A, B, P.x + N.x>, 1 }\n",
+                           with_geometry);
+    const auto& s = std::get<dsl::SphereShape>(p.desc.objects.back().shape);
+    CHECK(s.center.x == 0);               // in the hole
+    CHECK(s.center.y == 1);               // in the box
+    CHECK(s.center.z == Approx(1.5 - 1));  // the hole's wall at x = 1.5, its normal facing the origin: -x
+
+    const Parsed q = parse("merge { sphere { 0, 1 } sphere { x, 1 inverse } hollow }\n"
+                           "intersection { box { -1, 1 } plane { y, 0 } }\n");
+    const std::string pov = dsl::export_pov(q.desc);
+    CHECK_THAT(pov, Contains("merge {"));
+    CHECK_THAT(pov, Contains("inverse"));
+    CHECK_THAT(pov, Contains("hollow on"));
+    CHECK_THAT(pov, Contains("intersection {"));
+    const Parsed again = parse(pov);
+    REQUIRE(again.desc.objects.size() == 2);
+    CHECK(std::get<dsl::CsgShape>(again.desc.objects[0].shape).children[1]->inverse);
+}
+
+TEST_CASE("examples/scenes/csg.pov builds without warnings: four CSG objects, the cut in its cutter's red",
+          "[dsl][csg][scenes]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto b = dsl::load_scene<float>(std::filesystem::path(PHOTON_SCENES_DIR) / "csg.pov", po, bo);
+    CHECK(warnings.empty());
+    std::size_t csg = 0, targets = 0, with_parts = 0;
+    for (std::uint32_t i = 0; i < b.scene.objects().size(); ++i) {
+        csg += std::holds_alternative<photon::DefaultCsg<float>>(b.scene.objects()[i].shape);
+        targets += b.scene.is_caustic_target(i);
+        with_parts += !b.scene.objects()[i].part_materials.empty();
+    }
+    CHECK(b.scene.objects().size() == 9);
+    CHECK(csg == 4);
+    CHECK(targets == 2);     // the lens and the merged spheres
+    CHECK(with_parts == 1);  // the cube cut by the red sphere
+}
