@@ -216,11 +216,9 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
     }
     std::map<std::string, std::size_t> kinds;
     std::size_t targets = 0, shadowless = 0;
-    constexpr const char* names[] = {"sphere",         "plane", "box", "triangle", "mesh", "transformed sphere",
-                                     "transformed box"};
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
         const auto& o = scene.objects()[i];
-        ++kinds[names[o.shape.index()]];
+        ++kinds[std::visit([](const auto& shape) { return photon::plan::shape_name(shape); }, o.shape)];
         targets += scene.is_caustic_target(i);
         shadowless += !o.options.casts_shadow;
     }
