@@ -35,55 +35,25 @@ inline std::string missing_shape(const std::string& keyword) {
     return keyword;
 }
 
-// SKIPPED_OBJECT: cylinder { V, V, F [open] MODS } | cone { V, F, V, F [open] MODS }
-//               | disc { V, V, F [, F] MODS } | torus { F, F MODS }
-//               | difference|intersection { OBJECT {OBJECT} MODS } | KEYWORD { balanced tokens }
+// SKIPPED_OBJECT: difference|intersection { OBJECT {OBJECT} MODS } | KEYWORD { balanced tokens }
 inline Object Parser::parse_skipped_object(const Token& kw) {
     const std::string& w = kw.text;
     Object obj;
     obj.at = kw.location;
-    obj.shape = SkippedShape{w};
+    obj.shape = SkippedShape{w, {}};
     degrade(kw.location, degraded::skipped_object, w,
             "`" + w + "` is skipped: photon has no " + missing_shape(w) + " yet");
-    if (!one_of(w, {"cylinder", "cone", "disc", "torus", "difference", "intersection"})) {
+    if (!one_of(w, {"difference", "intersection"})) {
         skip_block(kw);
         return obj;
     }
     open_block(kw);
-    if (w == "cylinder") {
-        parse_vector("the base point of the cylinder");
-        optional_comma();
-        parse_vector("the cap point of the cylinder");
-        optional_comma();
-        parse_float("the radius of the cylinder");
-    } else if (w == "cone") {
-        parse_vector("the base point of the cone");
-        optional_comma();
-        parse_float("the base radius of the cone");
-        optional_comma();
-        parse_vector("the cap point of the cone");
-        optional_comma();
-        parse_float("the cap radius of the cone");
-    } else if (w == "disc") {
-        parse_vector("the centre of the disc");
-        optional_comma();
-        parse_vector("the normal of the disc");
-        optional_comma();
-        parse_float("the radius of the disc");
-        if (accept_symbol(",")) parse_float("the hole radius of the disc");
-    } else if (w == "torus") {
-        parse_float("the major radius of the torus");
-        optional_comma();
-        parse_float("the minor radius of the torus");
-    } else {  // difference, intersection: their objects, each read (and skipped with this one)
-        std::size_t children = 0;
-        while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) {
-            parse_object(next());
-            ++children;
-        }
-        if (children == 0) fail_expected("an object in `" + w + "`", peek());
+    std::size_t children = 0;  // their objects, each read (and skipped with this one)
+    while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) {
+        parse_object(next());
+        ++children;
     }
-    if (peek().is_identifier("open")) next();
+    if (children == 0) fail_expected("an object in `" + w + "`", peek());
     parse_modifiers(kw, obj);
     close_block(kw, "an object modifier (texture, pigment, finish, interior, translate, rotate, scale, ...)",
                 modifier_keywords);
