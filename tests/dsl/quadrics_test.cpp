@@ -9,6 +9,7 @@
 #include "dsl_test_util.hpp"
 
 #include <fstream>
+#include <map>
 #include <iterator>
 
 using namespace dsl_test;
@@ -227,4 +228,26 @@ TEST_CASE("the fuzz seed of the round shapes reads and builds, its values read a
     CHECK(p.warnings.size() == 2);
     const auto built = dsl::build<float>(p.desc);
     CHECK(built.scene.objects().size() == 13);
+}
+
+TEST_CASE("examples/scenes/shapes.pov builds without a warning into the library's round shapes, and renders",
+          "[dsl][quadrics][scenes]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    bo.overrides = {{"width", 40u}, {"height", 30u}, {"global_photons", 4000u}, {"samples_per_pixel", 1u},
+                    {"shadow_samples", 1u}, {"final_gather_rays", 4u}};
+    const auto b = dsl::load_scene<float>(std::filesystem::path(PHOTON_SCENES_DIR) / "shapes.pov", po, bo);
+    INFO(all_messages(warnings));
+    CHECK(warnings.empty());
+    std::map<std::string, int> kinds;
+    for (const auto& o : b.scene.objects())
+        ++kinds[std::visit([](const auto& s) { return plan::shape_name(s); }, o.shape)];
+    CHECK(kinds == std::map<std::string, int>{{"box", 2}, {"cone", 1}, {"cylinder", 1}, {"disc", 1},
+                                              {"transformed open cylinder", 1}, {"transformed torus", 1}});
+    const RenderResult r = render(b.scene, b.camera, b.settings);
+    CHECK(r.film.all_finite_nonnegative());
+    CHECK(r.film.mean().x > 0.05);
 }
