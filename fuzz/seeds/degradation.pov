@@ -5,7 +5,7 @@ light_source { <0, 6, -3>, 1 spotlight radius -90 falloff 90 projected_through {
 fog { distance 5 color rgb 0.5 }
 sky_sphere { pigment { gradient y color_map { [0 rgb 1] [0.5, 1 color rgb 0 color rgb z] } } }
 #declare M = colour_map { [0 rgb 0] [1 rgb <1, 0, 0>] }
-#declare Post = cylinder { 0, y, 0.1 open }
+#declare Post = superellipsoid { <0.5, 0.5> scale <0.1, 1, 0.1> }
 object { Post translate x }
 plane { y, 0 pigment { checker rgb x, rgb 1 } }
 sphere { 0, 1 pigment { marble color_map { M } turbulence 0.5 octaves 3 warp { repeat x } } normal { bumps 0.5 } }

@@ -104,14 +104,19 @@ grep -q "warning: light_source without" "$work/err" || fail "warning not printed
 expect 1 "$photon" check --strict "$work/warn.pov"
 
 # What photon reads but cannot render: warnings, a summary by kind, and errors under --strict.
-printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nfog { distance 5 }\ncylinder { 0, y, 1 }\ncone { 0, 1, y, 0 }\nsphere { 0, 1 pigment { hexagon rgb 1, rgb 0, rgb 0.5 } finish { ambient 0 } }\nsphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 } }\n' >"$work/degraded.pov"
+printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nfog { distance 5 }\nsor { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }\nlathe { linear_spline 2, <0, 0>, <1, 1> }\nsphere { 0, 1 pigment { hexagon rgb 1, rgb 0, rgb 0.5 } finish { ambient 0 } }\nsphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 } }\n' >"$work/degraded.pov"
 expect 0 "$photon" check "$work/degraded.pov"
-grep -q "degraded.pov:4:1: warning: \`cylinder\` is skipped: photon has no cylinder yet" "$work/err" || fail "skipped cylinder not reported"
-grep -q "^           2 skipped object: 1 cone, 1 cylinder" "$work/out" || { fail "no summary of skipped objects"; cat "$work/out"; }
+grep -q "degraded.pov:4:1: warning: \`sor\` is skipped: photon has no sor yet" "$work/err" || fail "skipped sor not reported"
+grep -q "^           2 skipped object: 1 lathe, 1 sor" "$work/out" || { fail "no summary of skipped objects"; cat "$work/out"; }
 grep -q "^           1 approximated pigment: 1 hexagon" "$work/out" || fail "no summary of approximated pigments (checker is evaluated)"
 grep -q "^           1 ignored effect: 1 fog" "$work/out" || fail "no summary of ignored effects"
 expect 1 "$photon" check --strict "$work/degraded.pov"
 grep -q "photon: 4 warnings (--strict)" "$work/err" || { fail "--strict on degraded constructs"; cat "$work/err"; }
+
+# The round shapes are objects, not skipped: `photon check` counts them by name.
+printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\n#default { finish { ambient 0 } }\ncylinder { 0, y, 1 open }\ncone { 0, 1, y, 0 scale <1, 2, 1> }\ndisc { 0, y, 2, 1 }\ntorus { 2, 0.5 rotate 90*x }\n' >"$work/round.pov"
+expect 0 "$photon" check --strict "$work/round.pov"
+grep -q "^objects    4: 1 disc, 1 open cylinder, 1 transformed cone, 1 transformed torus;" "$work/out" || { fail "round shapes not built"; cat "$work/out"; }
 
 printf '#if (Size > 1) sphere { 0, Size } #end\ncamera { location -5 look_at 0 }\n' >"$work/define.pov"
 expect 0 "$photon" check "$work/define.pov" -D Size=2

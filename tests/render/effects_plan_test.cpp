@@ -133,6 +133,28 @@ TEST_CASE("the plan's inferences on small scenes", "[plan]") {
         CHECK(plan_effects(inside, camera_at({0, 0, -0.5f}, {0, 0, 0}), s).indirect.present);
         CHECK_FALSE(plan_effects(inside, camera_at({0, 0, -4}, {0, 0, 0}), s).direct.present);
     }
+    SECTION("the quadrics of DefaultScene: flat and closed convex ones cannot light themselves, a torus can") {
+        auto alone = [&](auto shape) {
+            DefaultScene<float> scene;
+            scene.add(shape, scene.add_material(Material<float>::lambertian(Rgb<float>(0.7f))));
+            scene.add_light(PointLight<float>{.position = {0, 3, -3}, .power = Rgb<float>(10.0f)});
+            scene.commit();
+            return plan_effects(scene, camera_at({0, 1, -4}, {0, 0, 0}), s);
+        };
+        const EffectsPlan cylinder = alone(Cylinder<float>({0, -1, 0}, {0, 1, 0}, 1.0f));
+        CHECK_FALSE(cylinder.indirect.present);
+        CHECK_THAT(cylinder.indirect.reason, Catch::Contains("object 0 (cylinder)"));
+        CHECK_FALSE(alone(TruncatedCone<float>({0, -1, 0}, 1.0f, {0, 1, 0}, 0.0f)).indirect.present);
+        CHECK_FALSE(alone(Disc<float>({0, 0, 0}, {0, 1, 0}, 1.0f)).indirect.present);
+        const EffectsPlan squashed = alone(Transformed<TruncatedCone<float>>(
+            TruncatedCone<float>({0, -1, 0}, 1.0f, {0, 1, 0}, 1.0f), Affine<float>::scale({1, 1, 0.5f})));
+        CHECK_FALSE(squashed.indirect.present);
+        CHECK_THAT(squashed.indirect.reason, Catch::Contains("transformed cylinder"));
+        // An open tube and a torus see themselves: light bounces inside them.
+        CHECK(alone(Cylinder<float>({0, -1, 0}, {0, 1, 0}, 1.0f, true)).indirect.present);
+        CHECK(alone(Transformed<Torus<float>>(Torus<float>(1.0f, 0.3f), Affine<float>::rotate_xyz({-30, 0, 0})))
+                  .indirect.present);
+    }
     SECTION("a plane and a ball on it: light bounces between them") {
         const auto scene = floor_scene([](auto& sc, auto white) { sc.add(Sphere<float>({0, 1, 0}, 1.0f), white); });
         CHECK(plan_effects(scene, camera_at({0, 2, -4}, {0, 0, 0}), s).indirect.present);

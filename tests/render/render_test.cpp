@@ -39,6 +39,38 @@ TEMPLATE_TEST_CASE("Cornell box renders without NaN, Inf or negative pixels in e
     }
 }
 
+TEMPLATE_TEST_CASE("cylinder, cone, disc and torus render in DefaultScene without NaN, the same on any thread count",
+                   "[render]", float, double) {
+    using S = TestType;
+    DefaultScene<S> scene;
+    const auto white = scene.add_material(Material<S>::lambertian(Rgb<S>(S(0.7))));
+    const auto glass = scene.add_material(Material<S>::glass(S(1.5)));
+    scene.add(Plane<S>({0, 1, 0}, S(0)), white);
+    scene.add(Cylinder<S>({-1.5, 0, 0}, {-1.5, 1, 0}, S(0.4)), white);
+    scene.add(TruncatedCone<S>({-0.5, 0, 0}, S(0.4), {-0.5, 1, 0}, S(0)), glass);
+    scene.add(Disc<S>({0.5, 0.01, -1}, {0, 1, 0}, S(0.4), S(0.1)), white);
+    scene.add(Transformed<Torus<S>>(Torus<S>(S(0.35), S(0.12)), Affine<S>::translate({1.4, 0.12, 0})), white);
+    scene.add(Transformed<TruncatedCone<S>>(TruncatedCone<S>({0, 0, 0}, S(0.3), {0, 0.5, 0}, S(0.3), true),
+                                            Affine<S>::scale({1, 1, 0.5}).then(Affine<S>::translate({0.5, 0, 1}))),
+              white);
+    scene.add(Transformed<Disc<S>>(Disc<S>({0, 0, 0}, {0, 0, -1}, S(0.3)), Affine<S>::scale({2, 1, 1}).then(
+                                                                            Affine<S>::translate({0, 1.6, 1}))),
+              white);
+    scene.add_light(PointLight<S>{.position = {0, 3, -2}, .power = Rgb<S>(S(60))});
+    scene.commit();
+    const auto camera = PinholeCamera<S>::look_at({0, 1.5, -4}, {0, 0.4, 0}, {0, 1, 0}, S(60), S(4) / S(3));
+    for (const RenderMode mode : {RenderMode::rt, RenderMode::pm}) {
+        INFO("mode " << to_string(mode));
+        RenderSettings s = small(mode);
+        s.threads = 1;
+        const RenderResult one = render(scene, camera, s);
+        CHECK(one.film.all_finite_nonnegative());
+        CHECK(one.film.mean().x > 0.01);
+        s.threads = 2;
+        CHECK(identical(one.film, render(scene, camera, s).film));
+    }
+}
+
 TEST_CASE("the same seed gives the same image on 1 and 2 threads", "[render]") {
     const auto box = cornell::make_cornell_box<float>();
     for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::pm_direct}) {

@@ -58,7 +58,11 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Triangle<S>>) return "triangle";
     else if constexpr (std::is_same_v<Shape, TriangleMesh<S>>) return "mesh";
     else if constexpr (std::is_same_v<Shape, Cylinder<S>>) return shape.open() ? "open cylinder" : "cylinder";
-    else if constexpr (std::is_same_v<Shape, TruncatedCone<S>>) return shape.open() ? "open cone" : "cone";
+    else if constexpr (std::is_same_v<Shape, TruncatedCone<S>>) {
+        // The scene language places a cylinder under a shear or non-uniform scale as a cone with equal radii.
+        const char* name = shape.base_radius() == shape.cap_radius() ? "cylinder" : "cone";
+        return shape.open() ? std::string("open ") + name : std::string(name);
+    }
     else if constexpr (std::is_same_v<Shape, Disc<S>>) return "disc";
     else if constexpr (std::is_same_v<Shape, Torus<S>>) return "torus";
     else return "object";

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <optional>
@@ -223,6 +224,30 @@ struct PlaneShape {
 struct TriangleShape {
     std::array<Vector3, 3> vertices{};
 };
+/// `cylinder { base, cap, radius [open] }`: radius > 0, base and cap apart.
+struct CylinderShape {
+    Vector3 base{0.0}, cap{0, 1, 0};
+    double radius = 1;
+    bool open = false;
+};
+/// `cone { base, base_radius, cap, cap_radius [open] }`: radii >= 0, one > 0, base and cap apart.
+/// POV-Ray reads equal radii (within 1e-10) as a cylinder; so does the build step.
+struct ConeShape {
+    Vector3 base{0.0};
+    double base_radius = 1;
+    Vector3 cap{0, 1, 0};
+    double cap_radius = 0;
+    bool open = false;
+};
+/// `disc { center, normal, radius [, hole_radius] }`: 0 <= hole_radius < radius, normal not zero.
+struct DiscShape {
+    Vector3 center{0.0}, normal{0, 1, 0};
+    double radius = 1, hole_radius = 0;
+};
+/// `torus { major, minor }`: around the y axis at the origin, both radii > 0.
+struct TorusShape {
+    double major = 1, minor = 0.25;
+};
 /// An OBJ file named in a mesh (`mesh { obj "file.obj" }`). The parser only records it; the build
 /// step reads it (mesh_files.hpp), so that reading a scene never opens a mesh file.
 struct MeshFile {
@@ -249,14 +274,15 @@ struct CsgShape {
     std::vector<std::shared_ptr<const Object>> children;
 };
 
-/// An object photon reads but cannot render (a cylinder, a difference, a blob, ...): kept in the
+/// An object photon reads but cannot render (a difference, a blob, ...) or that has no surface: kept in the
 /// description so that the build skips it and `object { Name }` of a declared one warns again.
 struct SkippedShape {
-    std::string keyword;  ///< POV-Ray's keyword, `cylinder`
+    std::string keyword;  ///< POV-Ray's keyword, `blob`
+    std::string why;      ///< why, when not "photon has no such shape yet" (a cylinder of radius 0)
 };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
-                           SkippedShape, CsgShape>;
+                           SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -289,7 +315,9 @@ struct Object {
 
 /// POV-Ray's keyword for the shape of an object (`sphere`, `union`, `light_source`, ...).
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
-    constexpr const char* names[] = {"sphere", "box", "plane", "triangle", "mesh", "union", "light_source"};
+    constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
+                                     "light_source", "",    "",      "cylinder", "cone", "disc", "torus"};
+    static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);
     return names[s.index()];

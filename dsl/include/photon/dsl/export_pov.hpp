@@ -266,6 +266,18 @@ private:
             out_ << "box { " << vec(b->corner1) << ", " << vec(b->corner2) << '\n';
         } else if (const auto* p = std::get_if<PlaneShape>(&o.shape)) {
             out_ << "plane { " << vec(p->normal) << ", " << num(p->distance) << '\n';
+        } else if (const auto* c = std::get_if<CylinderShape>(&o.shape)) {
+            out_ << "cylinder { " << vec(c->base) << ", " << vec(c->cap) << ", " << num(c->radius)
+                 << (c->open ? " open" : "") << '\n';
+        } else if (const auto* k = std::get_if<ConeShape>(&o.shape)) {
+            out_ << "cone { " << vec(k->base) << ", " << num(k->base_radius) << ", " << vec(k->cap) << ", "
+                 << num(k->cap_radius) << (k->open ? " open" : "") << '\n';
+        } else if (const auto* d = std::get_if<DiscShape>(&o.shape)) {
+            out_ << "disc { " << vec(d->center) << ", " << vec(d->normal) << ", " << num(d->radius);
+            if (d->hole_radius != 0) out_ << ", " << num(d->hole_radius);
+            out_ << '\n';
+        } else if (const auto* r = std::get_if<TorusShape>(&o.shape)) {
+            out_ << "torus { " << num(r->major) << ", " << num(r->minor) << '\n';
         } else if (const auto* t = std::get_if<TriangleShape>(&o.shape)) {
             out_ << "triangle { " << vec(t->vertices[0]) << ", " << vec(t->vertices[1]) << ", " << vec(t->vertices[2])
                  << '\n';

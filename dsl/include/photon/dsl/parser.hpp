@@ -60,6 +60,7 @@ namespace photon::dsl {
 #include "parser/materials.hpp"
 #include "parser/objects.hpp"
 #include "parser/mesh2.hpp"
+#include "parser/quadrics.hpp"
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/statements.hpp"

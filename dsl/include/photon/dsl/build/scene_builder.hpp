@@ -331,6 +331,47 @@ private:
         }
         scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices)), m, opt);
     }
+    // A cylinder, cone or disc under a similarity is the library's shape itself (its radii scaled);
+    // under a shear or non-uniform scale, a Transformed cone or disc. A torus is always Transformed.
+    void add_shape(const CylinderShape& c, const Transform& t, MaterialId m, ObjectOptions opt) {
+        add_frustum(c.base, c.radius, c.cap, c.radius, c.open, t, m, opt);
+    }
+    void add_shape(const ConeShape& c, const Transform& t, MaterialId m, ObjectOptions opt) {
+        add_frustum(c.base, c.base_radius, c.cap, c.cap_radius, c.open, t, m, opt);
+    }
+    void add_frustum(const Vector3& base, double r0, const Vector3& cap, double r1, bool open, const Transform& t,
+                     MaterialId m, ObjectOptions opt) {
+        if (std::abs(r0 - r1) < 1e-10) r1 = r0;  // POV-Ray's rule: a cone with (nearly) equal radii is a cylinder
+        if (const auto scale = similarity_scale(t.linear)) {
+            const Vec3<S> b(t.point(base)), c(t.point(cap));
+            if (r0 == r1)
+                scene_->add(Cylinder<S>(b, c, S(r0 * *scale), open), m, opt);
+            else
+                scene_->add(TruncatedCone<S>(b, S(r0 * *scale), c, S(r1 * *scale), open), m, opt);
+        } else {
+            scene_->add(Transformed<TruncatedCone<S>>(
+                            TruncatedCone<S>(Vec3<S>(base), S(r0), Vec3<S>(cap), S(r1), open), to_affine<S>(t)),
+                        m, opt);
+        }
+    }
+    void add_shape(const DiscShape& d, const Transform& t, MaterialId m, ObjectOptions opt) {
+        if (const auto scale = similarity_scale(t.linear)) {
+            const Vector3 normal = glm::transpose(glm::inverse(t.linear)) * d.normal;
+            scene_->add(Disc<S>(Vec3<S>(t.point(d.center)), Vec3<S>(normal), S(d.radius * *scale),
+                                S(d.hole_radius * *scale)),
+                        m, opt);
+        } else {
+            scene_->add(Transformed<Disc<S>>(Disc<S>(Vec3<S>(d.center), Vec3<S>(d.normal), S(d.radius),
+                                                     S(d.hole_radius)),
+                                             to_affine<S>(t)),
+                        m, opt);
+        }
+    }
+    void add_shape(const TorusShape& tor, const Transform& t, MaterialId m, ObjectOptions opt) {
+        if (tor.major == 0)  // the points at distance `minor` from the centre: a sphere
+            return add_shape(SphereShape{Vector3(0.0), tor.minor}, t, m, opt);
+        scene_->add(Transformed<Torus<S>>(Torus<S>(S(tor.major), S(tor.minor)), to_affine<S>(t)), m, opt);
+    }
     void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const CsgShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const LightSource&, const Transform&, MaterialId, ObjectOptions) {}

@@ -34,50 +34,15 @@ inline std::string missing_shape(const std::string& keyword) {
     return keyword;
 }
 
-// SKIPPED_OBJECT: cylinder { V, V, F [open] MODS } | cone { V, F, V, F [open] MODS }
-//               | disc { V, V, F [, F] MODS } | torus { F, F MODS } | KEYWORD { balanced tokens }
+// SKIPPED_OBJECT: KEYWORD { balanced tokens }
 inline Object Parser::parse_skipped_object(const Token& kw) {
     const std::string& w = kw.text;
     Object obj;
     obj.at = kw.location;
-    obj.shape = SkippedShape{w};
+    obj.shape = SkippedShape{w, {}};
     degrade(kw.location, degraded::skipped_object, w,
             "`" + w + "` is skipped: photon has no " + missing_shape(w) + " yet");
-    if (!one_of(w, {"cylinder", "cone", "disc", "torus"})) {
-        skip_block(kw);
-        return obj;
-    }
-    open_block(kw);
-    if (w == "cylinder") {
-        parse_vector("the base point of the cylinder");
-        optional_comma();
-        parse_vector("the cap point of the cylinder");
-        optional_comma();
-        parse_float("the radius of the cylinder");
-    } else if (w == "cone") {
-        parse_vector("the base point of the cone");
-        optional_comma();
-        parse_float("the base radius of the cone");
-        optional_comma();
-        parse_vector("the cap point of the cone");
-        optional_comma();
-        parse_float("the cap radius of the cone");
-    } else if (w == "disc") {
-        parse_vector("the centre of the disc");
-        optional_comma();
-        parse_vector("the normal of the disc");
-        optional_comma();
-        parse_float("the radius of the disc");
-        if (accept_symbol(",")) parse_float("the hole radius of the disc");
-    } else if (w == "torus") {
-        parse_float("the major radius of the torus");
-        optional_comma();
-        parse_float("the minor radius of the torus");
-    }
-    if (peek().is_identifier("open")) next();
-    parse_modifiers(kw, obj);
-    close_block(kw, "an object modifier (texture, pigment, finish, interior, translate, rotate, scale, ...)",
-                modifier_keywords);
+    skip_block(kw);
     return obj;
 }
 

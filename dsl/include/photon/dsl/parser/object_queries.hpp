@@ -55,6 +55,17 @@ inline Numeric Parser::parse_object_query(const Token& f) {
     return result;
 }
 
+/// Whether `p` is inside the solid of revolution from `base` (radius r0) to `cap` (radius r1).
+[[nodiscard]] inline bool inside_frustum(const Vector3& p, const Vector3& base, double r0, const Vector3& cap, double r1) {
+    const Vector3 axis = cap - base;
+    const double length = glm::length(axis);
+    const double h = glm::dot(p - base, axis) / length;
+    if (h < 0 || h > length) return false;
+    const double r = r0 + (r1 - r0) * h / length;
+    const Vector3 radial = p - base - axis * (h / length);
+    return glm::dot(radial, radial) <= r * r;
+}
+
 /// POV-Ray's Inside test: solids contain their inside (boundary included, within POV-Ray's
 /// tolerance); triangles and meshes without inside_vector contain nothing.
 [[nodiscard]] inline bool object_contains(const Object& o, const Vector3& world) {
@@ -73,6 +84,15 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                 return true;
             } else if constexpr (std::is_same_v<S, PlaneShape>) {
                 return glm::dot(p, glm::normalize(s.normal)) - s.distance < tolerance;
+            } else if constexpr (std::is_same_v<S, CylinderShape>) {
+                return inside_frustum(p, s.base, s.radius, s.cap, s.radius);
+            } else if constexpr (std::is_same_v<S, ConeShape>) {  // open or closed: the solid (POV-Ray)
+                return inside_frustum(p, s.base, s.base_radius, s.cap, s.cap_radius);
+            } else if constexpr (std::is_same_v<S, DiscShape>) {  // POV-Ray: the half-space behind the normal
+                return glm::dot(p - s.center, glm::normalize(s.normal)) < 0;
+            } else if constexpr (std::is_same_v<S, TorusShape>) {
+                const double ring = std::sqrt(p.x * p.x + p.z * p.z) - s.major;
+                return p.y * p.y + ring * ring <= s.minor * s.minor;
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

@@ -52,6 +52,14 @@ inline Object Parser::parse_object(const Token& kw) {
         optional_comma();
         p.distance = parse_float("the distance of the plane from the origin");
         obj.shape = p;
+    } else if (w == "cylinder") {
+        parse_cylinder(obj);
+    } else if (w == "cone") {
+        parse_cone(obj);
+    } else if (w == "disc") {
+        parse_disc(obj);
+    } else if (w == "torus") {
+        parse_torus(obj);
     } else if (w == "triangle" || w == "smooth_triangle") {
         obj.shape = parse_triangle_corners(kw);
     } else if (w == "mesh") {
@@ -139,7 +147,9 @@ inline Object Parser::parse_object(const Token& kw) {
             if (const auto* skipped = std::get_if<SkippedShape>(&obj.shape))
                 degrade(t.location, degraded::skipped_object, skipped->keyword,
                         "`" + t.text + "` is a `" + skipped->keyword + "` (declared at " + position_in(v->at, t.location) +
-                            "): skipped, photon has no " + missing_shape(skipped->keyword) + " yet");
+                            "): skipped, " +
+                            (skipped->why.empty() ? "photon has no " + missing_shape(skipped->keyword) + " yet"
+                                                  : skipped->why));
         }
         if (std::holds_alternative<LightSource>(obj.shape)) {
             while (try_transform(obj.transform)) {

@@ -304,6 +304,18 @@ private:
     // mesh2.hpp
     MeshShape parse_mesh2(const Token& kw, Object& obj);
 
+    // quadrics.hpp
+    bool accept_open();
+    double finite_value(double v, const std::string& what, const SourceLocation& at);
+    double absolute_radius(double r, const std::string& what, const SourceLocation& at);
+    void skip_empty_shape(Object& obj, const std::string& keyword, const std::string& why, const SourceLocation& at);
+    bool degenerate(Object& obj, const std::string& keyword, const Vector3& base, const Vector3& cap,
+                    const SourceLocation& at);
+    void parse_cylinder(Object& obj);
+    void parse_cone(Object& obj);
+    void parse_disc(Object& obj);
+    void parse_torus(Object& obj);
+
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
                  const std::string& message);
