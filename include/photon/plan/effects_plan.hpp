@@ -151,10 +151,14 @@ template <class SceneT>
                                                     typename SceneT::scalar_type radius, std::int64_t self = -1) {
     using S = typename SceneT::scalar_type;
     const auto objects = scene.objects();
-    for (std::uint32_t i = 0; i < objects.size(); ++i) {
+    // A wall is a plane (unbounded) or a solid whose bounds hold the ball: the scene's BVH finds
+    // them (the ones that cast shadows), so a scene of 40,000 objects asks a few, not all, per ball.
+    std::vector<std::uint32_t> walls;
+    scene.occluders_in(BBox<S>{center - Vec3<S>(radius), center + Vec3<S>(radius)}, walls);
+    std::sort(walls.begin(), walls.end());  // the first wall in the scene's order names the reason
+    for (std::uint32_t i : walls) {
         const auto& o = objects[i];
-        if (std::int64_t(i) == self || scene.any_material_of(i, is_transmissive_material) || !o.options.casts_shadow)
-            continue;
+        if (std::int64_t(i) == self || scene.any_material_of(i, is_transmissive_material)) continue;
         const bool closed = std::visit([](const auto& s) { return plan::is_convex_solid(s); }, o.shape);
         if (closed && !scene.object_bounds(i).contains(eye) &&
             std::visit([&](const auto& s) { return plan::contains_ball(s, center, radius); }, o.shape))
