@@ -266,11 +266,20 @@ private:
         return leaf;
     }
     std::optional<DefaultCsg<S>> csg_leaf(const PlaneShape& p, const Transform& t) { return DefaultCsg<S>(place(p, t)); }
+    template <class Round>
+        requires(std::is_same_v<Round, CylinderShape> || std::is_same_v<Round, ConeShape> ||
+                 std::is_same_v<Round, TorusShape>)
+    std::optional<DefaultCsg<S>> csg_leaf(const Round& r, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(r, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
     /// Not solids (no inside), or not shapes.
     template <class Other> std::optional<DefaultCsg<S>> csg_leaf(const Other&, const Transform&) { return std::nullopt; }
     /// The shapes csg_leaf makes a leaf of.
     template <class Shape> static constexpr bool is_solid_shape(const Shape&) {
-        return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape>;
+        return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape> ||
+               std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -288,6 +297,35 @@ private:
             f(Box<S>(Vec3<S>(t.point(b.corner1)), Vec3<S>(t.point(b.corner2))));
         else
             f(Transformed<Box<S>>(Box<S>(Vec3<S>(b.corner1), Vec3<S>(b.corner2)), to_affine<S>(t)));
+    }
+    /// A cylinder or cone placed: the library's shape under a similarity (its radii scaled), else
+    /// a Transformed cone (a cylinder squashed by a shear or non-uniform scale is a cone of equal
+    /// radii: one type fewer to dispatch, the same frustum code); handed to `f`.
+    template <class F> void place(const CylinderShape& c, const Transform& t, F&& f) {
+        place_frustum(c.base, c.radius, c.cap, c.radius, c.open, t, f);
+    }
+    template <class F> void place(const ConeShape& c, const Transform& t, F&& f) {
+        place_frustum(c.base, c.base_radius, c.cap, c.cap_radius, c.open, t, f);
+    }
+    template <class F>
+    void place_frustum(const Vector3& base, double r0, const Vector3& cap, double r1, bool open, const Transform& t, F&& f) {
+        if (std::abs(r0 - r1) < 1e-10) r1 = r0;  // POV-Ray's rule: a cone with (nearly) equal radii is a cylinder
+        if (const auto scale = similarity_scale(t.linear)) {
+            const Vec3<S> b(t.point(base)), c(t.point(cap));
+            if (r0 == r1)
+                f(Cylinder<S>(b, c, S(r0 * *scale), open));
+            else
+                f(TruncatedCone<S>(b, S(r0 * *scale), c, S(r1 * *scale), open));
+        } else {
+            f(Transformed<TruncatedCone<S>>(TruncatedCone<S>(Vec3<S>(base), S(r0), Vec3<S>(cap), S(r1), open),
+                                            to_affine<S>(t)));
+        }
+    }
+    /// The torus placed: always Transformed (Torus lies around the y axis at the origin, and the
+    /// matrix costs little beside the quartic); of major radius 0, the sphere it is.
+    template <class F> void place(const TorusShape& tor, const Transform& t, F&& f) {
+        if (tor.major == 0) return place(SphereShape{Vector3(0.0), tor.minor}, t, f);
+        f(Transformed<Torus<S>>(Torus<S>(S(tor.major), S(tor.minor)), to_affine<S>(t)));
     }
     Plane<S> place(const PlaneShape& p, const Transform& t) {
         const Vector3 n = glm::normalize(p.normal);
@@ -331,28 +369,11 @@ private:
         }
         scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices)), m, opt);
     }
-    // A cylinder, cone or disc under a similarity is the library's shape itself (its radii scaled);
-    // under a shear or non-uniform scale, a Transformed cone or disc. A torus is always Transformed.
     void add_shape(const CylinderShape& c, const Transform& t, MaterialId m, ObjectOptions opt) {
-        add_frustum(c.base, c.radius, c.cap, c.radius, c.open, t, m, opt);
+        place(c, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const ConeShape& c, const Transform& t, MaterialId m, ObjectOptions opt) {
-        add_frustum(c.base, c.base_radius, c.cap, c.cap_radius, c.open, t, m, opt);
-    }
-    void add_frustum(const Vector3& base, double r0, const Vector3& cap, double r1, bool open, const Transform& t,
-                     MaterialId m, ObjectOptions opt) {
-        if (std::abs(r0 - r1) < 1e-10) r1 = r0;  // POV-Ray's rule: a cone with (nearly) equal radii is a cylinder
-        if (const auto scale = similarity_scale(t.linear)) {
-            const Vec3<S> b(t.point(base)), c(t.point(cap));
-            if (r0 == r1)
-                scene_->add(Cylinder<S>(b, c, S(r0 * *scale), open), m, opt);
-            else
-                scene_->add(TruncatedCone<S>(b, S(r0 * *scale), c, S(r1 * *scale), open), m, opt);
-        } else {
-            scene_->add(Transformed<TruncatedCone<S>>(
-                            TruncatedCone<S>(Vec3<S>(base), S(r0), Vec3<S>(cap), S(r1), open), to_affine<S>(t)),
-                        m, opt);
-        }
+        place(c, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const DiscShape& d, const Transform& t, MaterialId m, ObjectOptions opt) {
         if (const auto scale = similarity_scale(t.linear)) {
@@ -368,9 +389,7 @@ private:
         }
     }
     void add_shape(const TorusShape& tor, const Transform& t, MaterialId m, ObjectOptions opt) {
-        if (tor.major == 0)  // the points at distance `minor` from the centre: a sphere
-            return add_shape(SphereShape{Vector3(0.0), tor.minor}, t, m, opt);
-        scene_->add(Transformed<Torus<S>>(Torus<S>(S(tor.major), S(tor.minor)), to_affine<S>(t)), m, opt);
+        place(tor, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const CsgShape&, const Transform&, MaterialId, ObjectOptions) {}
