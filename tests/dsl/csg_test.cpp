@@ -46,7 +46,7 @@ photon::Ray<double> ray(photon::Vec3<double> o, photon::Vec3<double> d) { return
 
 }  // namespace
 
-TEST_CASE("difference, intersection and merge build one CSG object; children keep their own textures", "[dsl][csg]") {
+TEST_CASE("difference, intersection and merge build one CSG object, children keep their own textures", "[dsl][csg]") {
     const Built b = build_text("difference {\n"
                                "  box { -1, 1 pigment { rgb <1, 0, 0> } }\n"
                                "  sphere { 0, 0.5 pigment { rgb <0, 1, 0> } }\n"
@@ -144,7 +144,7 @@ TEST_CASE("CSG children without an inside, skipped children and lights", "[dsl][
     CHECK_THAT(all_messages(one.warnings), Contains("`intersection` with one object is that object alone"));
 }
 
-TEST_CASE("inside() and trace() answer for CSG; export writes it back", "[dsl][csg]") {
+TEST_CASE("inside() and trace() answer for CSG, export writes it back", "[dsl][csg]") {
     dsl::ParseOptions with_geometry;
     with_geometry.geometry = dsl::library_object_geometry();
     const Parsed p = parse("#declare Holed = difference { box { -1, 1 } sphere { 0, 0.5 } translate x }\n"

@@ -80,7 +80,7 @@ TEMPLATE_TEST_CASE("csg lens: intersection of two spheres, from outside, inside,
     }
 }
 
-TEMPLATE_TEST_CASE("csg difference: a box with a spherical hole; normals flip on the subtracted part",
+TEMPLATE_TEST_CASE("csg difference: a box with a spherical hole, normals flip on the subtracted part",
                    "[geometry][csg]", float, double) {
     using S = TestType;
     const auto holed = TestCsg<S>::difference({Box<S>({-1, -1, -1}, {1, 1, 1}), Sphere<S>({0, 0, 0}, S(0.5))});
@@ -110,7 +110,7 @@ TEMPLATE_TEST_CASE("csg difference: a box with a spherical hole; normals flip on
     CHECK(two_holes.contains({0, 0, 0}));
 }
 
-TEMPLATE_TEST_CASE("csg merge has no inner surfaces; inverse swaps inside and outside", "[geometry][csg]", float,
+TEMPLATE_TEST_CASE("csg merge has no inner surfaces, inverse swaps inside and outside", "[geometry][csg]", float,
                    double) {
     using S = TestType;
     const auto merged = TestCsg<S>::merge({Sphere<S>({S(-0.5), 0, 0}, 1), Sphere<S>({S(0.5), 0, 0}, 1)});
@@ -286,7 +286,7 @@ TEMPLATE_TEST_CASE("csg with many leaves: between successive hits the inside tes
     CHECK(disagreements == 0);
 }
 
-TEST_CASE("csg in a scene: each leaf's own material, whole-object questions ask every part; plan facts",
+TEST_CASE("csg in a scene: each leaf's own material, whole-object questions ask every part, plan facts",
           "[geometry][csg]") {
     DefaultScene<double> scene;
     const MaterialId white = scene.add_material(Material<double>::lambertian(Rgb<double>(0.8)));
