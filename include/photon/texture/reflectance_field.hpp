@@ -25,8 +25,10 @@ concept ReflectanceField = Scalar<S> && std::copy_constructible<F> && requires(c
 template <Scalar S> class AnyReflectanceField {
 public:
     AnyReflectanceField() = default;
-    template <ReflectanceField<S> F>
-        requires(!std::same_as<std::remove_cvref_t<F>, AnyReflectanceField>)
+    // The same-type test comes first: it stops the concept's copy_constructible check from
+    // asking about this constructor again (a recursion clang rejects).
+    template <class F>
+        requires(!std::same_as<std::remove_cvref_t<F>, AnyReflectanceField> && ReflectanceField<F, S>)
     explicit AnyReflectanceField(F field)
         : bound_(Rgb<S>(field.upper_bound())), impl_(std::make_shared<const Model<F>>(std::move(field))) {}
 
