@@ -23,6 +23,8 @@
 #include <photon/plan/shape_facts.hpp>
 #include <photon/scene/scene.hpp>
 
+#include "geometry/crofton.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -216,23 +218,15 @@ TEMPLATE_TEST_CASE("csg trees: nested operations, transformed leaves, children",
     CHECK(tree.contains({2, 0, S(0.5)}));
 }
 
-/// Mean crossings of isotropic uniform lines through the ball (centre, radius), with its standard
-/// error; each line's walk continues from past each hit by the offset rules.
+/// Mean crossings of random lines through the ball (centre, radius) and its standard error; each
+/// line's walk continues from past each hit by the offset rules.
 template <class Shape, class S = scalar_of<Shape>>
 std::pair<double, double> mean_crossings(const Shape& shape, const Vec3<S>& center, S radius, int lines) {
-    Pcg32 rng(11, 0);
-    long crossings = 0, squares = 0;
-    for (int i = 0; i < lines; ++i) {
-        const Vec3<S> u = uniform_sphere<S>(rng.uniform2<S>());
-        const Frame<S> f = Frame<S>::from_normal(u);
-        const Vec2<S> p = concentric_disc<S>(rng.uniform2<S>()) * radius;
-        Ray<S> ray{center + f.tangent * p.x + f.bitangent * p.y - u * (radius * S(1.01)), u};
+    return testing::mean_crossings<S>(center, radius, lines, 11, [&](Ray<S> ray) {
         long k = 0;
         for (auto h = shape.intersect(ray); h && k < 16; h = next_hit(shape, ray, *h)) ++k;
-        crossings += k, squares += k * k;
-    }
-    const double mean = double(crossings) / lines, variance = double(squares) / lines - mean * mean;
-    return {mean, std::sqrt(variance / lines)};
+        return k;
+    });
 }
 
 TEMPLATE_TEST_CASE("csg Crofton: mean crossings of random lines match the surface areas", "[geometry][csg]", float,

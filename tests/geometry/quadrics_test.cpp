@@ -16,6 +16,8 @@
 #include <photon/math/sampling.hpp>
 #include <photon/plan/shape_facts.hpp>
 
+#include "geometry/crofton.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -125,28 +127,20 @@ TEMPLATE_TEST_CASE("torus: the four crossings, hole, normals, tiny and huge scal
     CHECK_THROWS_AS(Torus<S>(1, -1), std::invalid_argument);
 }
 
-/// Mean number of crossings of isotropic uniform lines through the ball (centre, radius), and
-/// its standard error.
+/// Mean crossings of random lines through the ball (centre, radius) and its standard error: each
+/// line restarted a little past each hit.
 template <class Shape, class S = scalar_of<Shape>>
 std::pair<double, double> mean_crossings(const Shape& shape, const Vec3<S>& center, S radius, int lines) {
-    Pcg32 rng(7, 0);
-    long crossings = 0, squares = 0;
-    for (int i = 0; i < lines; ++i) {
-        const Vec3<S> u = uniform_sphere<S>(rng.uniform2<S>());
-        const Frame<S> f = Frame<S>::from_normal(u);
-        const Vec2<S> p = concentric_disc<S>(rng.uniform2<S>()) * radius;
-        Ray<S> ray{center + f.tangent * p.x + f.bitangent * p.y - u * (radius * S(1.01)), u};
+    return testing::mean_crossings<S>(center, radius, lines, 7, [&](Ray<S> ray) {
         long k = 0;
         for (int guard = 0; guard < 8; ++guard) {
             const auto h = shape.intersect(ray);
             if (!h) break;
             ++k;
-            ray.origin = h->point + u * (radius * S(1e-5));
+            ray.origin = h->point + ray.direction * (radius * S(1e-5));
         }
-        crossings += k, squares += k * k;
-    }
-    const double mean = double(crossings) / lines, variance = double(squares) / lines - mean * mean;
-    return {mean, std::sqrt(variance / lines)};
+        return k;
+    });
 }
 
 TEMPLATE_TEST_CASE("Crofton: mean crossings of random lines match the surface areas", "[geometry]", float, double) {

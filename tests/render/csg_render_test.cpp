@@ -10,6 +10,8 @@
 
 #include <photon/photon.hpp>
 
+#include "render/pixel_of.hpp"
+
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -60,14 +62,9 @@ struct FloorView {
                 area[std::size_t(y) * width + x] = 0.5 * glm::length(glm::cross(*c - *a, *d - *b));
             }
     }
-    /// The pixel that sees floor point p, if any (the camera's basis is orthogonal).
+    /// The pixel that sees floor point p, if any.
     [[nodiscard]] std::optional<std::size_t> pixel_of(const Vec3<double>& p) const {
-        const Vec3<double> d = p - camera.location();
-        const double c = glm::dot(d, camera.direction()) / glm::dot(camera.direction(), camera.direction());
-        const double u = glm::dot(d, camera.right()) / glm::dot(camera.right(), camera.right()) / c + 0.5;
-        const double v = 0.5 - glm::dot(d, camera.up()) / glm::dot(camera.up(), camera.up()) / c;
-        if (!(c > 0) || !(u >= 0 && u < 1 && v >= 0 && v < 1)) return std::nullopt;
-        return std::size_t(v * height) * width + std::size_t(u * width);
+        return testing::pixel_of(camera, p, width, height);
     }
     /// Flux landing in the window: radiance * pi / rho * area, summed (the floor is Lambertian).
     [[nodiscard]] double flux(const Film& film) const {
