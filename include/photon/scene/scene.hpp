@@ -14,12 +14,9 @@
 #include <vector>
 
 #include "../geometry/box.hpp"
-#include "../geometry/cone.hpp"
-#include "../geometry/csg.hpp"
-#include "../geometry/cylinder.hpp"
-#include "../geometry/torus.hpp"
 #include "../geometry/bvh.hpp"
 #include "../geometry/cone.hpp"
+#include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
 #include "../geometry/plane.hpp"
