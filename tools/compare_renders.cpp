@@ -20,7 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include <photon/dsl/dsl.hpp>
-#include <photon/film/image_io.hpp>
+#include "load_image_io.hpp"
 
 #include "region_statistics.hpp"
 
@@ -202,7 +202,7 @@ int main(int argc, char** argv) {
         const std::string name_a = labels.substr(0, comma),
                           name_b = comma == std::string::npos ? "B" : labels.substr(comma + 1);
 
-        const Film a = photon::read_image(a_file), b = photon::read_image(b_file);
+        const Film a = photon::image_module::read_image(a_file), b = photon::image_module::read_image(b_file);
         if (a.width() != b.width() || a.height() != b.height())
             throw std::invalid_argument(a_file + " is " + std::to_string(a.width()) + "x" + std::to_string(a.height()) +
                                         " but " + b_file + " is " + std::to_string(b.width()) + "x" +
@@ -282,7 +282,7 @@ int main(int argc, char** argv) {
             photon::ImageWriteOptions wo;
             wo.exposure = exposure;
             wo.metadata = {{"Compression", "jpeg:88"}};
-            photon::write_image(side_file, side_by_side({&a, &b, &diff_unexposed}, 8), wo);
+            photon::image_module::write_image(side_file, side_by_side({&a, &b, &diff_unexposed}, 8), wo);
         }
         if (!mask_file.empty()) {
             constexpr float palette[8][3] = {{1, 0.2f, 0.2f}, {0.2f, 1, 0.2f}, {0.3f, 0.3f, 1}, {1, 1, 0.2f},
@@ -294,7 +294,7 @@ int main(int argc, char** argv) {
                 const auto& c = palette[std::size_t(std::max(label[i], 0)) % 8];
                 mask.pixels()[i] = label[i] < 0 ? Rgb<float>(grey) : Rgb<float>(c[0], c[1], c[2]);
             }
-            photon::write_image(mask_file, mask);
+            photon::image_module::write_image(mask_file, mask);
         }
         std::cerr << "photon-compare: RMSE " << fixed(rmse, 4) << ", PSNR " << fixed(psnr, 2)
                   << " dB (peak 1), mean " << fixed(channel_mean(mean_a), 4) << " vs " << fixed(channel_mean(mean_b), 4)

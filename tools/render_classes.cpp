@@ -15,7 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <photon/film/image_io.hpp>
+#include "load_image_io.hpp"
 
 #include "scene_class_judge.hpp"
 
@@ -74,8 +74,8 @@ int main(int argc, char** argv) {
             renders.emplace_back("pm", render_class(c.name, RenderMode::pm, m));
             renders.emplace_back("pm-direct", render_class(c.name, RenderMode::pm_direct, m));
             if (c.direct_only) renders.emplace_back("rt", render_class(c.name, RenderMode::rt, m));
-            photon::write_image(out_dir + "/" + c.name + "-judge.exr", j.film);
-            photon::write_image(out_dir + "/" + c.name + "-pm.exr", renders[0].second.film);
+            photon::image_module::write_image(out_dir + "/" + c.name + "-judge.exr", j.film);
+            photon::image_module::write_image(out_dir + "/" + c.name + "-pm.exr", renders[0].second.film);
             std::ofstream blocks(out_dir + "/" + c.name + "-judge-blocks.tsv");
             for (std::size_t b = 0; b < j.blocks.size(); ++b)
                 blocks << regions::channel_mean(j.blocks[b]) << '\t' << int(j.lit[b]) << '\n';

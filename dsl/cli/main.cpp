@@ -8,9 +8,9 @@
 #include <CLI/CLI.hpp>
 
 #include <photon/dsl/dsl.hpp>
-#include <photon/film/image_io.hpp>
 #include <photon/plan/plan_report.hpp>
 
+#include "load_image_io.hpp"
 #include "setting_options.hpp"
 
 #include <atomic>
@@ -315,7 +315,7 @@ private:
 
 int run_render(SceneOptions& so, const RenderOptions& ro) {
     const fs::path output(ro.output);
-    photon::check_writable_image_path(output);
+    photon::image_module::check_writable_image_path(output);
     dsl::BuildOptions bo;
     bo.diagnostics = so.sink();
     bo.overrides = ro.settings.overrides();
@@ -345,7 +345,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
         settings.mode != photon::RenderMode::reference)
         throw std::runtime_error("--error-image: only the sppm and reference modes estimate their error (mode " +
                                  std::string(photon::to_string(settings.mode)) + ")");
-    if (!ro.error_image.empty()) photon::check_writable_image_path(ro.error_image);
+    if (!ro.error_image.empty()) photon::image_module::check_writable_image_path(ro.error_image);
     if (!so.quiet) {
         std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
                   << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "
@@ -403,7 +403,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
         // Never replace a finished image by an unfinished one.
         written.replace_filename(output.stem().string() + ".partial" + output.extension().string());
     }
-    photon::write_image(written, result.film, wo);
+    photon::image_module::write_image(written, result.film, wo);
     if (!ro.error_image.empty()) {
         fs::path error_written = ro.error_image;
         if (partial && fs::exists(error_written, ec))
@@ -412,7 +412,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
             std::cerr << "photon: warning: no error image: the render had no two independent halves (one pass, or one "
                          "sample per pixel in one round)\n";
         else
-            photon::write_image(error_written, result.error_image, wo);
+            photon::image_module::write_image(error_written, result.error_image, wo);
     }
     if (!so.quiet || partial) {
         std::cerr << "photon: wrote " << written.string()

@@ -5,11 +5,11 @@
 
 #include <catch2/catch.hpp>
 
-#include <photon/film/image_io.hpp>
 #include <photon/photon.hpp>
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -47,10 +47,21 @@ inline std::string first_invalid_pixel(const Film& film) {
 /// Every render of the suite goes through this: the image holds no NaN, Inf or negative pixel.
 #define HARD_REQUIRE_VALID(film) REQUIRE(::hard::first_invalid_pixel(film) == "")
 
-/// Writes `film` to $PHOTON_HARD_CASE_IMAGES/<name>.exr when that variable names a folder, so
-/// that the renders of this suite can be looked at; does nothing otherwise.
+/// Writes `film` to $PHOTON_HARD_CASE_IMAGES/<name>.pfm when that variable names a folder, so
+/// that the renders of this suite can be looked at (oiiotool reads PFM); does nothing otherwise.
+/// PFM, written here in a few lines, keeps OpenImageIO's start-up cost (about a second) out of
+/// every test process.
 inline void dump(const Film& film, const std::string& name) {
-    if (const char* dir = std::getenv("PHOTON_HARD_CASE_IMAGES")) write_image(std::string(dir) + "/" + name + ".exr", film);
+    const char* dir = std::getenv("PHOTON_HARD_CASE_IMAGES");
+    if (!dir) return;
+    std::ofstream out(std::string(dir) + "/" + name + ".pfm", std::ios::binary);
+    out << "PF\n" << film.width() << ' ' << film.height() << "\n-1\n";  // -1: little-endian floats
+    for (unsigned y = film.height(); y-- > 0;)  // PFM stores the bottom row first
+        for (unsigned x = 0; x < film.width(); ++x) {
+            const Rgb<float>& p = film.at(x, y);
+            const float rgb[3] = {p.x, p.y, p.z};
+            out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
+        }
 }
 
 /// Mean radiance (mean of the three channels) of each cell of a cols x rows grid over the image,

@@ -7,53 +7,19 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <fcntl.h>
 #include <unistd.h>
-#include <utility>
 #include <vector>
 
 #include "film.hpp"
+#include "image_write_options.hpp"
 #include "tone_map.hpp"
 
 namespace photon {
-
-struct ImageWriteOptions {
-    float exposure = 1.0f;  ///< multiplies radiance before sRGB encoding (8-bit formats only)
-    std::vector<std::pair<std::string, std::string>> metadata;  ///< string attributes stored in the file
-};
-
-/// Error raised by image input and output, naming the file.
-class ImageError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-namespace detail {
-
-inline bool is_float_format(const std::string& format) {
-    return format == "openexr" || format == "hdr" || format == "pfm" || format == "tiff" || format == "fits";
-}
-
-/// A unique temporary path next to `path`, keeping its extension (OpenImageIO picks the format
-/// from it).
-inline std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
-    static std::atomic<unsigned> counter{0};
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    std::filesystem::path tmp = path;
-    tmp.replace_filename("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                         std::to_string(stamp % 1000000) + "-" + std::to_string(counter++) +
-                         path.extension().string());
-    return tmp;
-}
-
-}  // namespace detail
 
 /// Throws ImageError if `path` cannot be written as an image: unknown format, missing directory,
 /// or a directory without write permission. Call it before a long render.
