@@ -18,14 +18,16 @@ stamp "release suite passed"
 
 # -O1 keeps the instrumented build and run quick; -g1 (line tables) is enough for stack traces.
 # Left out: POV-Ray's own checks and the install test (it builds a separate consumer project
-# without the sanitizers), which run no instrumented photon code, the examples (demos), and the
-# scene-class gallery (minutes of rendering in Release; the same code paths as the unit tests).
+# without the sanitizers), which run no instrumented photon code, the examples (demos), the
+# scene-class gallery (minutes of rendering in Release; the same code paths as the unit tests),
+# and the tests tagged [heavy] (statistical checks with many samples, 10-40 s each when
+# instrumented, whose code paths lighter tests run).
 cmake -S . -B "$build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
     -DPHOTON_SANITIZE=ON -DPHOTON_BUILD_EXAMPLES=OFF
 cmake --build "$build-asan" -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1 \
 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir "$build-asan" --output-on-failure -j "$jobs" -LE "povray|install|gallery"
+    ctest --test-dir "$build-asan" --output-on-failure -j "$jobs" -LE "povray|install|gallery|heavy"
 stamp "sanitizer suite passed"
 
 CXX=clang++ cmake -S fuzz -B "$build-fuzz" -G Ninja

@@ -13,13 +13,13 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-struct Built {
+struct CorpusScene {
     dsl::SceneDescription desc;
     std::vector<dsl::Diagnostic> warnings;
     photon::dsl::BuiltScene<double> scene;
 };
 
-Built build_text(const std::string& text, dsl::ParseOptions po = {}) {
+CorpusScene build_corpus(const std::string& text, dsl::ParseOptions po = {}) {
     std::vector<dsl::Diagnostic> w;
     po.diagnostics = collect(w);
     auto desc = dsl::parse_string(text, "test.pov", po);
@@ -114,7 +114,7 @@ TEST_CASE("animation options give POV-Ray's identifiers for one frame", "[dsl][a
 }
 
 TEST_CASE("light_group is read as a union of its lights and objects, with a warning", "[dsl][corpus]") {
-    const Built b = build_text(std::string(stage) +
+    const CorpusScene b = build_corpus(std::string(stage) +
                                "light_group {\n"
                                "  light_source { <0, 9, 0>, rgb 1 }\n"
                                "  sphere { 0, 1 }\n"
@@ -128,7 +128,7 @@ TEST_CASE("light_group is read as a union of its lights and objects, with a warn
 }
 
 TEST_CASE("an empty union warns and adds nothing, as in POV-Ray", "[dsl][corpus]") {
-    const Built b = build_text(std::string(stage) + "union { }\nsphere { 0, 1 }\n");
+    const CorpusScene b = build_corpus(std::string(stage) + "union { }\nsphere { 0, 1 }\n");
     CHECK_THAT(all_messages(b.warnings), Contains("`union` without objects adds nothing to the scene"));
     CHECK(b.scene.scene.objects().size() == 1);
     const Parsed p = parse("#declare U = union { #if (0) sphere { 0, 1 } #end }\nobject { U } sphere { 0, 1 }");
@@ -182,7 +182,7 @@ TEST_CASE("a `#` before no directive name is ignored with a warning, as POV-Ray 
 
 TEST_CASE("average maps take entries without weights, density_file takes interpolate, mesh triangles uv_vectors",
           "[dsl][corpus]") {
-    const Built b = build_text(std::string(stage) +
+    const CorpusScene b = build_corpus(std::string(stage) +
                                "sphere { 0, 1 texture { average texture_map {\n"
                                "  [pigment { rgb <1, 0, 0> } finish { phong 1 }]\n"
                                "  [pigment { rgb <0, 0, 1> }]\n"
@@ -198,7 +198,7 @@ TEST_CASE("average maps take entries without weights, density_file takes interpo
 
 TEST_CASE("values POV-Ray takes and photon cannot render are replaced, with a located warning", "[dsl][corpus]") {
     SECTION("transmit 100: filter and transmit scaled to a sum of 1") {
-        const Built b = build_text(std::string(stage) + "sphere { 0, 1\n  pigment { rgb 0.5 transmit 100 } }\n");
+        const CorpusScene b = build_corpus(std::string(stage) + "sphere { 0, 1\n  pigment { rgb 0.5 transmit 100 } }\n");
         CHECK(places(b.warnings, "approximated pigment") == std::vector<std::string>{"4:3 pigment"});
         CHECK_THAT(all_messages(b.warnings), Contains("uses filter 0 and transmit 1"));
         const auto m = b.scene.scene.material_of(0).params();
@@ -206,14 +206,14 @@ TEST_CASE("values POV-Ray takes and photon cannot render are replaced, with a lo
         CHECK(m.diffuse.x == Approx(0).margin(1e-12));
     }
     SECTION("a negative pigment colour is read as 0 in those channels") {
-        const Built b = build_text(std::string(stage) + "sphere { 0, 1 pigment { rgb <-0.5, 0.5, 0.25> } }\n");
+        const CorpusScene b = build_corpus(std::string(stage) + "sphere { 0, 1 pigment { rgb <-0.5, 0.5, 0.25> } }\n");
         CHECK_THAT(all_messages(b.warnings), Contains("negative colour rgb <-0.5, 0.5, 0.25>"));
         const auto m = b.scene.scene.material_of(0).params();
         CHECK(m.diffuse.x == 0);
         CHECK(m.diffuse.y > 0);
     }
     SECTION("a negative light is left out, a partly negative one loses its negative channels") {
-        const Built b = build_text(std::string(stage) +
+        const CorpusScene b = build_corpus(std::string(stage) +
                                    "light_source { 0, rgb -0.9 }\nlight_source { y, rgb <1, -1, 1> }\n"
                                    "sphere { 0, 1 }\n");
         CHECK(places(b.warnings, "approximated light") ==
@@ -224,10 +224,10 @@ TEST_CASE("values POV-Ray takes and photon cannot render are replaced, with a lo
         CHECK(l.power.x > 0);
     }
     SECTION("phong_size 0 with a highlight becomes 1; without one it changes nothing") {
-        const Built b = build_text(std::string(stage) + "sphere { 0, 1 finish { phong 1 phong_size 0 } }\n");
+        const CorpusScene b = build_corpus(std::string(stage) + "sphere { 0, 1 finish { phong 1 phong_size 0 } }\n");
         CHECK_THAT(places(b.warnings, "approximated finish"), Catch::Matchers::VectorContains(std::string("3:32 phong_size")));
         CHECK(b.scene.scene.material_of(0).params().phong_exponent == 1);
-        const Built quiet = build_text(std::string(stage) + "sphere { 0, 1 finish { phong 0 phong_size 0 } }\n");
+        const CorpusScene quiet = build_corpus(std::string(stage) + "sphere { 0, 1 finish { phong 0 phong_size 0 } }\n");
         CHECK_THAT(all_messages(quiet.warnings), !Contains("phong_size"));
     }
 }

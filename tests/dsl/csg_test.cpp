@@ -13,18 +13,18 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-const char* const lit = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
+const char* const csg_stage = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
 
-struct Built {
+struct CsgScene {
     dsl::SceneDescription desc;
     std::vector<dsl::Diagnostic> warnings;
     photon::DefaultScene<double> scene;
 };
-Built build_text(const std::string& text) {
-    Built b;
+CsgScene build_csg(const std::string& text) {
+    CsgScene b;
     dsl::ParseOptions po;
     po.diagnostics = collect(b.warnings);
-    b.desc = dsl::parse_string(std::string(lit) + text, "test.pov", po);
+    b.desc = dsl::parse_string(std::string(csg_stage) + text, "test.pov", po);
     dsl::BuildOptions bo;
     bo.diagnostics = collect(b.warnings);
     auto built = dsl::build<double>(b.desc, bo);
@@ -33,11 +33,11 @@ Built build_text(const std::string& text) {
     return b;
 }
 
-using Csg = photon::DefaultCsg<double>;
+using DslCsg = photon::DefaultCsg<double>;
 
-const Csg& only_csg(const Built& b) {
+const DslCsg& only_csg(const CsgScene& b) {
     REQUIRE(b.scene.objects().size() == 1);
-    const auto* c = std::get_if<Csg>(&b.scene.objects()[0].shape);
+    const auto* c = std::get_if<DslCsg>(&b.scene.objects()[0].shape);
     REQUIRE(c != nullptr);
     return *c;
 }
@@ -47,7 +47,7 @@ photon::Ray<double> ray(photon::Vec3<double> o, photon::Vec3<double> d) { return
 }  // namespace
 
 TEST_CASE("difference, intersection and merge build one CSG object, children keep their own textures", "[dsl][csg]") {
-    const Built b = build_text("difference {\n"
+    const CsgScene b = build_csg("difference {\n"
                                "  box { -1, 1 pigment { rgb <1, 0, 0> } }\n"
                                "  sphere { 0, 0.5 pigment { rgb <0, 1, 0> } }\n"
                                "  sphere { <0, 1, 0>, 0.25 }\n"
@@ -56,7 +56,7 @@ TEST_CASE("difference, intersection and merge build one CSG object, children kee
                                "}\n");
     CHECK(places(b.warnings, "approximated object").empty());
     CHECK(places(b.warnings, "skipped object").empty());
-    const Csg& c = only_csg(b);
+    const DslCsg& c = only_csg(b);
     CHECK(c.op() == photon::CsgOp::difference);
     CHECK(c.leaves().size() == 3);
     CHECK(c.bounds().min.z == Approx(2));  // the first child's box, translated
@@ -79,13 +79,13 @@ TEST_CASE("difference, intersection and merge build one CSG object, children kee
     CHECK(hit->material->params().diffuse.z > 0);
     CHECK(hit->material->params().diffuse.x == 0);
 
-    const Built i = build_text("intersection { sphere { <0, 0, 0.5>, 1 } sphere { <0, 0, -0.5>, 1 } }\n");
+    const CsgScene i = build_csg("intersection { sphere { <0, 0, 0.5>, 1 } sphere { <0, 0, -0.5>, 1 } }\n");
     CHECK(only_csg(i).op() == photon::CsgOp::intersection);
     hit = i.scene.intersect(ray({0, 0, -5}, {0, 0, 1}));
     REQUIRE(hit);
     CHECK(hit->hit.point.z == Approx(-0.5));
 
-    const Built m = build_text("merge { sphere { 0, 1 } sphere { x, 1 } pigment { rgb 1 } }\n");
+    const CsgScene m = build_csg("merge { sphere { 0, 1 } sphere { x, 1 } pigment { rgb 1 } }\n");
     CHECK(only_csg(m).op() == photon::CsgOp::merge);
     CHECK(m.scene.objects()[0].part_materials.empty());  // one texture: no per-part materials
     hit = m.scene.intersect(ray({0.5, 0, 0}, {1, 0, 0}));  // from inside: no inner wall at x = 1
@@ -95,14 +95,14 @@ TEST_CASE("difference, intersection and merge build one CSG object, children kee
 
 TEST_CASE("inverse and hollow as POV-Ray reads them", "[dsl][csg]") {
     // intersection with an inverse is a difference.
-    const Built b = build_text("intersection { box { -1, 1 } sphere { 0, 0.5 inverse } }\n");
+    const CsgScene b = build_csg("intersection { box { -1, 1 } sphere { 0, 0.5 inverse } }\n");
     auto hit = b.scene.intersect(ray({0, 0, 0}, {1, 0, 0}));
     REQUIRE(hit);
     CHECK(hit->hit.point.x == Approx(0.5));
     CHECK(hit->hit.normal.x == Approx(-1));
     // A solid alone with inverse: a CSG of one leaf, its inside out (an air bubble in glass).
-    const Built bubble = build_text("sphere { 0, 1 inverse hollow pigment { rgbf 1 } interior { ior 1.5 } }\n");
-    const Csg& c = only_csg(bubble);
+    const CsgScene bubble = build_csg("sphere { 0, 1 inverse hollow pigment { rgbf 1 } interior { ior 1.5 } }\n");
+    const DslCsg& c = only_csg(bubble);
     CHECK(c.inverted());
     hit = bubble.scene.intersect(ray({0, 0, -5}, {0, 0, 1}));
     REQUIRE(hit);
@@ -110,32 +110,32 @@ TEST_CASE("inverse and hollow as POV-Ray reads them", "[dsl][csg]") {
     CHECK(bubble.desc.objects[1].hollow == true);
     CHECK(places(bubble.warnings, "ignored effect").empty());
     // Twice is none.
-    CHECK_FALSE(build_text("intersection { sphere { 0, 1 inverse inverse } box { -2, 2 } }\n").desc.objects[1].inverse);
-    const Built tri = build_text("triangle { 0, x, y inverse }\n");
+    CHECK_FALSE(build_csg("intersection { sphere { 0, 1 inverse inverse } box { -2, 2 } }\n").desc.objects[1].inverse);
+    const CsgScene tri = build_csg("triangle { 0, x, y inverse }\n");
     CHECK(places(tri.warnings, "ignored effect") == std::vector<std::string>{"3:1 inverse"});
     CHECK(tri.scene.objects().size() == 1);
 }
 
 TEST_CASE("CSG children without an inside, skipped children and lights", "[dsl][csg]") {
-    Built b = build_text("merge { sphere { 0, 1 } triangle { 0, x, y } light_source { <0, 3, 0>, 1 } }\n");
+    CsgScene b = build_csg("merge { sphere { 0, 1 } triangle { 0, x, y } light_source { <0, 3, 0>, 1 } }\n");
     CHECK(places(b.warnings, "approximated object") == std::vector<std::string>{"3:25 merge"});
     CHECK(b.scene.objects().size() == 2);  // the sphere as a CSG leaf, the triangle on its own
     CHECK(b.scene.lights().size() == 2);
-    b = build_text("intersection { sphere { 0, 1 } mesh { triangle { 0, x, y } } }\n");
+    b = build_csg("intersection { sphere { 0, 1 } mesh { triangle { 0, x, y } } }\n");
     CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:32 intersection"});
     CHECK(b.scene.objects().empty());
-    b = build_text("difference { box { -1, 1 } triangle { 0, x, y } }\n");
+    b = build_csg("difference { box { -1, 1 } triangle { 0, x, y } }\n");
     CHECK(places(b.warnings, "approximated object") == std::vector<std::string>{"3:28 difference"});
     CHECK(b.scene.objects().size() == 1);
     // A child photon cannot read yet: cut away, it is missing (warned where it is); deciding, the
     // whole CSG is skipped.
-    b = build_text("difference { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
+    b = build_csg("difference { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
     CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:28 blob"});
     CHECK(b.scene.objects().size() == 1);
-    b = build_text("intersection { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
+    b = build_csg("intersection { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
     CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:30 blob", "3:1 intersection"});
     CHECK(b.scene.objects().empty());
-    b = build_text("intersection { sphere { -3*x, 1 } sphere { 3*x, 1 } }\n");
+    b = build_csg("intersection { sphere { -3*x, 1 } sphere { 3*x, 1 } }\n");
     CHECK_THAT(all_messages(b.warnings), Contains("is empty (its objects do not overlap): nothing renders"));
     CHECK_THAT(error_of("difference { }"), Contains("1:14: expected an object in `difference`"));
     CHECK(error_of("merge { sphere { 0, 1 } pigment { rgb 1 } sphere { 0, 2 } }") ==

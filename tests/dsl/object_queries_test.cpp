@@ -17,29 +17,29 @@ dsl::Vector3 centre_of(const std::string& text, std::size_t object = 0) {
     return std::get<dsl::SphereShape>(p.desc.objects.at(object).shape).center;
 }
 
-bool near(const dsl::Vector3& a, const dsl::Vector3& b, double eps = 1e-9) { return glm::length(a - b) <= eps; }
+bool close_to(const dsl::Vector3& a, const dsl::Vector3& b, double eps = 1e-9) { return glm::length(a - b) <= eps; }
 
 }  // namespace
 
 TEST_CASE("trace() finds the first hit and its normal on a declared object", "[dsl][geometry]") {
     const std::string ball = "#declare Ball = sphere { <0, 0, 0>, 2 translate <1, 0, 0> }\n";
-    CHECK(near(centre_of(ball + "sphere { trace(Ball, <1, 10, 0>, -y), 0.1 }"), {1, 2, 0}));
+    CHECK(close_to(centre_of(ball + "sphere { trace(Ball, <1, 10, 0>, -y), 0.1 }"), {1, 2, 0}));
     // The normal faces the ray's origin, written to the fourth argument.
-    CHECK(near(centre_of(ball + "#declare N = <9, 9, 9>;\n#declare P = trace(Ball, <1, 0, 0>, x, N);\n"
+    CHECK(close_to(centre_of(ball + "#declare N = <9, 9, 9>;\n#declare P = trace(Ball, <1, 0, 0>, x, N);\n"
                                 "sphere { N, 0.1 }"),
                {-1, 0, 0}));
     // A miss gives <0, 0, 0> for the point and for the normal, as in POV-Ray.
-    CHECK(near(centre_of(ball + "#declare P = trace(Ball, <10, 10, 0>, y, M);\nsphere { P + M + 1, 0.1 }"), {1, 1, 1}));
+    CHECK(close_to(centre_of(ball + "#declare P = trace(Ball, <10, 10, 0>, y, M);\nsphere { P + M + 1, 0.1 }"), {1, 1, 1}));
     // Transforms and unions are the render's: a scaled box in a union.
-    CHECK(near(centre_of("#declare U = union { box { -1, 1 scale <1, 3, 1> } sphere { <5, 0, 0>, 1 } }\n"
+    CHECK(close_to(centre_of("#declare U = union { box { -1, 1 scale <1, 3, 1> } sphere { <5, 0, 0>, 1 } }\n"
                          "sphere { trace(U, <0, 10, 0>, -y), 0.1 }"),
                {0, 3, 0}));
 }
 
 TEST_CASE("min_extent() and max_extent() are the object's bounds", "[dsl][geometry]") {
     const std::string b = "#declare B = box { <-1, -2, -3>, <1, 2, 3> translate <10, 0, 0> }\n";
-    CHECK(near(centre_of(b + "sphere { min_extent(B), 1 }"), {9, -2, -3}));
-    CHECK(near(centre_of(b + "sphere { max_extent(B), 1 }"), {11, 2, 3}));
+    CHECK(close_to(centre_of(b + "sphere { min_extent(B), 1 }"), {9, -2, -3}));
+    CHECK(close_to(centre_of(b + "sphere { max_extent(B), 1 }"), {11, 2, 3}));
     // A plane is unbounded: POV-Ray's BOUND_HUGE.
     CHECK(centre_of("#declare P = plane { y, 0 }\nsphere { max_extent(P), 1 }").x == 2e10);
 }

@@ -16,17 +16,17 @@ using photon::Vec3;
 
 namespace {
 
-const char* const lit = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
+const char* const pattern_stage = "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
 
-struct Built {
+struct PatternScene {
     std::vector<dsl::Diagnostic> warnings;
     std::optional<dsl::BuiltScene<double>> built;
 };
-Built build_text(const std::string& text) {
-    Built b;
+PatternScene build_patterned(const std::string& text) {
+    PatternScene b;
     dsl::ParseOptions po;
     po.diagnostics = collect(b.warnings);
-    const auto desc = dsl::parse_string(std::string(lit) + text, "test.pov", po);
+    const auto desc = dsl::parse_string(std::string(pattern_stage) + text, "test.pov", po);
     dsl::BuildOptions bo;
     bo.diagnostics = collect(b.warnings);
     b.built.emplace(dsl::build<double>(desc, bo));
@@ -34,14 +34,14 @@ Built build_text(const std::string& text) {
 }
 
 /// The diffuse albedo of object `i` at world point p.
-Rgb<double> albedo(const Built& b, std::uint32_t i, const Vec3<double>& p) {
+Rgb<double> albedo(const PatternScene& b, std::uint32_t i, const Vec3<double>& p) {
     return b.built->scene.material_of(i).diffuse_at(p);
 }
 
 }  // namespace
 
 TEST_CASE("a pattern's modifiers, colours and transformations are read", "[dsl][texture]") {
-    const Parsed p = parse(std::string(lit) +
+    const Parsed p = parse(std::string(pattern_stage) +
                            "sphere { 0, 1 pigment { marble turbulence 0.5 octaves 4 omega 0.6 lambda 2.2 "
                            "frequency 2 phase 0.1 sine_wave noise_generator 3 "
                            "color_map { [0 rgb 1] [0.5 rgbt <1, 0, 0, 0.5>] } scale 2 } }\n"
@@ -69,7 +69,7 @@ TEST_CASE("a pattern's modifiers, colours and transformations are read", "[dsl][
 }
 
 TEST_CASE("the built material evaluates the pattern where light meets it", "[dsl][texture]") {
-    const Built b = build_text("plane { y, 0 pigment { checker rgb 1, rgb <0, 0, 0.5> } finish { ambient 0 diffuse 0.5 } }\n"
+    const PatternScene b = build_patterned("plane { y, 0 pigment { checker rgb 1, rgb <0, 0, 0.5> } finish { ambient 0 diffuse 0.5 } }\n"
                                "plane { y, -1 pigment { gradient x color_map { [0 rgb 0] [1 rgb 0.8] } } "
                                "finish { ambient 0 diffuse 1 } }\n");
     INFO(all_messages(b.warnings));
@@ -82,7 +82,7 @@ TEST_CASE("the built material evaluates the pattern where light meets it", "[dsl
 }
 
 TEST_CASE("a texture moves with the transformations written after it, as in POV-Ray", "[dsl][texture]") {
-    const Built b = build_text(
+    const PatternScene b = build_patterned(
         "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } translate x }\n"  // moved
         "sphere { 0, 1 translate x pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } }\n"  // not moved
         "union { sphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } } translate x }\n"
@@ -98,7 +98,7 @@ TEST_CASE("a texture moves with the transformations written after it, as in POV-
 }
 
 TEST_CASE("a declared pigment's pattern takes further modifiers", "[dsl][texture]") {
-    const Parsed p = parse(std::string(lit) +
+    const Parsed p = parse(std::string(pattern_stage) +
                            "#declare P = pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } }\n"
                            "sphere { 0, 1 pigment { P turbulence 0.3 scale 2 } }\n"
                            "sphere { 0, 1 pigment { P rgb <1, 0, 0> } }\n");
@@ -112,7 +112,7 @@ TEST_CASE("a declared pigment's pattern takes further modifiers", "[dsl][texture
 }
 
 TEST_CASE("what photon cannot evaluate is averaged with a warning that says why", "[dsl][texture]") {
-    const Parsed p = parse(std::string(lit) +
+    const Parsed p = parse(std::string(pattern_stage) +
                            "sphere { 0, 1 pigment { bozo warp { turbulence 0.5 } } }\n"
                            "sphere { 0, 1 pigment { gradient x uv_mapping } }\n"
                            "sphere { 0, 1 pigment { crackle } }\n");
@@ -123,7 +123,7 @@ TEST_CASE("what photon cannot evaluate is averaged with a warning that says why"
 }
 
 TEST_CASE("a pattern's brightest colour is what the energy check scales", "[dsl][texture]") {
-    const Built b = build_text("sphere { 0, 1 pigment { checker rgb 1, rgb 0.2 } "
+    const PatternScene b = build_patterned("sphere { 0, 1 pigment { checker rgb 1, rgb 0.2 } "
                                "finish { ambient 0 diffuse 1 reflection 0.3 } }\n");
     CHECK_THAT(all_messages(b.warnings), Contains("diffuse (the pattern's brightest colour) 1 + reflection 0.3"));
     const auto& m = b.built->scene.material_of(0);
@@ -133,7 +133,7 @@ TEST_CASE("a pattern's brightest colour is what the energy check scales", "[dsl]
 }
 
 TEST_CASE("export-pov writes a pattern back, and reading it gives the same pattern", "[dsl][texture]") {
-    const Parsed p = parse(std::string(lit) +
+    const Parsed p = parse(std::string(pattern_stage) +
                            "sphere { 0, 1 pigment { wood turbulence <0.1, 0.2, 0> octaves 3 frequency 2 cubic_wave "
                            "color_map { [0 rgb 1] [0.5 rgb <1, 0, 0>] } rotate x * 90 scale 0.2 } "
                            "finish { ambient 0 } translate <1, 2, 3> }\n"

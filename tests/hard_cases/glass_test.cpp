@@ -12,7 +12,7 @@ using namespace photon;
 namespace {
 
 /// A floor and a back wall under a sphere light, plus whatever `add_glass` puts in front.
-template <class S, class AddGlass> DefaultScene<S> room(AddGlass&& add_glass, ObjectOptions glass_options = {}) {
+template <class S, class AddGlass> DefaultScene<S> glass_room(AddGlass&& add_glass, ObjectOptions glass_options = {}) {
     DefaultScene<S> scene;
     const auto white = scene.add_material(Material<S>::lambertian(Rgb<S>(S(0.7))));
     const auto green = scene.add_material(Material<S>::lambertian({S(0.2), S(0.7), S(0.3)}));
@@ -24,7 +24,7 @@ template <class S, class AddGlass> DefaultScene<S> room(AddGlass&& add_glass, Ob
     return scene;
 }
 
-template <class S> PinholeCamera<S> room_camera() {
+template <class S> PinholeCamera<S> glass_room_camera() {
     return PinholeCamera<S>::look_at({0, 1.0, -3}, {0, 0.5, 0}, {0, 1, 0}, S(50), S(32.0 / 24.0));
 }
 
@@ -54,11 +54,11 @@ TEMPLATE_TEST_CASE("a glass sphere of ior 1 is invisible", "[hard][glass]", floa
     using S = TestType;
     const auto nothing = [](DefaultScene<S>&, ObjectOptions) {};
     const auto sphere = glass_sphere<S>({0, 0.5, -0.5}, S(0.5), S(1));
-    const PinholeCamera<S> camera = room_camera<S>();
+    const PinholeCamera<S> camera = glass_room_camera<S>();
     SECTION("rt, sphere casting no shadow: the same image to rounding") {
         const RenderSettings s = hard::tiny(RenderMode::rt);
-        const RenderResult without = render(room<S>(nothing), camera, s);
-        const RenderResult with = render(room<S>(sphere, {.casts_shadow = false}), camera, s);
+        const RenderResult without = render(glass_room<S>(nothing), camera, s);
+        const RenderResult with = render(glass_room<S>(sphere, {.casts_shadow = false}), camera, s);
         HARD_REQUIRE_VALID(with.film);
         // Stratified shadow samples draw the same numbers whether or not a ray crossed the
         // sphere: only rounding along the twice-offset rays differs.
@@ -67,8 +67,8 @@ TEMPLATE_TEST_CASE("a glass sphere of ior 1 is invisible", "[hard][glass]", floa
     SECTION("pm: its shadow is filled by caustic photons, which carry the same light") {
         RenderSettings s = hard::tiny(RenderMode::pm);
         s.caustic_photons = 200'000;
-        const RenderResult without = render(room<S>(nothing), camera, s);
-        const RenderResult with = render(room<S>(sphere), camera, s);
+        const RenderResult without = render(glass_room<S>(nothing), camera, s);
+        const RenderResult with = render(glass_room<S>(sphere), camera, s);
         HARD_REQUIRE_VALID(with.film);
         hard::dump(with.film, std::string("ior1-pm-with-") + (sizeof(S) == 4 ? "f" : "d"));
         hard::dump(without.film, std::string("ior1-pm-without-") + (sizeof(S) == 4 ? "f" : "d"));
@@ -133,10 +133,10 @@ TEMPLATE_TEST_CASE("glass scenes render finite images in every mode", "[hard][gl
         },
     };
     for (std::size_t i = 0; i < cases.size(); ++i) {
-        const DefaultScene<S> scene = room<S>(cases[i]);
+        const DefaultScene<S> scene = glass_room<S>(cases[i]);
         for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::pm_direct}) {
             INFO("case " << i << ", mode " << to_string(mode));
-            const RenderResult r = render(scene, room_camera<S>(), hard::tiny(mode));
+            const RenderResult r = render(scene, glass_room_camera<S>(), hard::tiny(mode));
             HARD_REQUIRE_VALID(r.film);
             CHECK(r.film.mean().y > 0.01);
         }

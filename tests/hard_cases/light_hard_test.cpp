@@ -8,12 +8,12 @@ using namespace photon;
 
 namespace {
 
-template <class S> PinholeCamera<S> room_camera() {
+template <class S> PinholeCamera<S> lit_room_camera() {
     return PinholeCamera<S>::look_at({0, 1.2, -3}, {0, 0.5, 0}, {0, 1, 0}, S(55), S(32.0 / 24.0));
 }
 
 /// Floor and back wall; `extra` adds objects and lights.
-template <class S, class Extra> DefaultScene<S> room(Extra&& extra) {
+template <class S, class Extra> DefaultScene<S> lit_room(Extra&& extra) {
     DefaultScene<S> scene;
     const auto white = scene.add_material(Material<S>::lambertian(Rgb<S>(S(0.7))));
     scene.add(Box<S>({-3, -0.1, -3}, {3, 0, 3}), white);
@@ -36,7 +36,7 @@ double max_pixel(const Film& film) {
 TEMPLATE_TEST_CASE("a light inside a closed sphere lights nothing outside it", "[hard][light]", float, double) {
     using S = TestType;
     for (const bool area : {false, true}) {
-        const auto scene = room<S>([&](DefaultScene<S>& sc) {
+        const auto scene = lit_room<S>([&](DefaultScene<S>& sc) {
             sc.add(Sphere<S>({0, 0.6, 0}, S(0.5)), sc.add_material(Material<S>::lambertian(Rgb<S>(S(0.8)))));
             if (area)
                 sc.add_light(SphereLight<S>{.center = {0.1, 0.6, 0}, .radius = S(0.2), .power = Rgb<S>(S(100))});
@@ -45,7 +45,7 @@ TEMPLATE_TEST_CASE("a light inside a closed sphere lights nothing outside it", "
         });
         for (const RenderMode mode : all_modes) {
             INFO((area ? "sphere" : "point") << " light, mode " << to_string(mode));
-            const RenderResult r = render(scene, room_camera<S>(), hard::tiny(mode));
+            const RenderResult r = render(scene, lit_room_camera<S>(), hard::tiny(mode));
             HARD_REQUIRE_VALID(r.film);
             hard::dump(r.film, std::string("light-inside-") + (area ? "sphere-" : "point-") + to_string(mode) + "-" + (sizeof(S) == 4 ? "f" : "d"));
             CHECK(max_pixel(r.film) == 0.0);  // not one photon or shadow ray gets out
@@ -55,7 +55,7 @@ TEMPLATE_TEST_CASE("a light inside a closed sphere lights nothing outside it", "
             if (mode == RenderMode::rt) continue;
             RenderSettings forced = hard::tiny(mode);
             forced.effects.lights = EffectSwitch::on;
-            const RenderResult f = render(scene, room_camera<S>(), forced);
+            const RenderResult f = render(scene, lit_room_camera<S>(), forced);
             HARD_REQUIRE_VALID(f.film);
             CHECK(max_pixel(f.film) == 0.0);
             CHECK(f.stats.global.stored > 0);
@@ -67,21 +67,21 @@ TEMPLATE_TEST_CASE("a light exactly on a surface", "[hard][light]", float, doubl
     using S = TestType;
     // A point light on the floor lights the floor at grazing incidence (cos = 0: nothing) and the
     // wall normally; a sphere light centred on the floor is half buried in it.
-    const auto point = room<S>([](DefaultScene<S>& sc) { sc.add_light(PointLight<S>{{0, 0, 0}, Rgb<S>(S(50))}); });
-    const auto half_buried = room<S>([](DefaultScene<S>& sc) {
+    const auto point = lit_room<S>([](DefaultScene<S>& sc) { sc.add_light(PointLight<S>{{0, 0, 0}, Rgb<S>(S(50))}); });
+    const auto half_buried = lit_room<S>([](DefaultScene<S>& sc) {
         sc.add_light(SphereLight<S>{.center = {0, 0, 0}, .radius = S(0.2), .power = Rgb<S>(S(50))});
     });
     for (const DefaultScene<S>* scene : {&point, &half_buried}) {
         for (const RenderMode mode : all_modes) {
             INFO((scene == &point ? "point" : "sphere") << " light on the floor, mode " << to_string(mode));
-            const RenderResult r = render(*scene, room_camera<S>(), hard::tiny(mode));
+            const RenderResult r = render(*scene, lit_room_camera<S>(), hard::tiny(mode));
             HARD_REQUIRE_VALID(r.film);
             CHECK(r.film.mean().x > 0.01);  // the wall is lit
         }
     }
     // rt, point light: the floor sees it at cos = 0, so every pixel that sees the floor (the
     // bottom row) is black but for rounding in the hit point's height (cos ~ 1e-8).
-    const RenderResult r = render(point, room_camera<S>(), hard::tiny(RenderMode::rt));
+    const RenderResult r = render(point, lit_room_camera<S>(), hard::tiny(RenderMode::rt));
     const double wall = max_pixel(r.film);
     for (unsigned x = 0; x < r.film.width(); ++x) CHECK(r.film.at(x, r.film.height() - 1).x <= 1e-6 * wall);
 }
@@ -97,18 +97,18 @@ TEMPLATE_TEST_CASE("a zero-radius sphere light is an error: a zero-power light i
     CHECK_THROWS_WITH(empty.add_light(PointLight<S>{{0, 1, 0}, Rgb<S>(S(-1))}), Catch::Contains("power"));
     CHECK(empty.lights().empty());
 
-    const auto dark = room<S>([](DefaultScene<S>& sc) {
+    const auto dark = lit_room<S>([](DefaultScene<S>& sc) {
         sc.add(Sphere<S>({0, 0.4, 0}, S(0.4)), sc.add_material(Material<S>::glass(S(1.5))));
         sc.add_light(PointLight<S>{{0, 2, 0}, Rgb<S>(S(0))});
         sc.add_light(SphereLight<S>{.center = {1, 2, 0}, .radius = S(0.1), .power = Rgb<S>(S(0))});
     });
-    const auto unlit = room<S>([](DefaultScene<S>& sc) {
+    const auto unlit = lit_room<S>([](DefaultScene<S>& sc) {
         sc.add(Sphere<S>({0, 0.4, 0}, S(0.4)), sc.add_material(Material<S>::glass(S(1.5))));
     });
     for (const DefaultScene<S>* scene : {&dark, &unlit}) {
         for (const RenderMode mode : all_modes) {
             INFO((scene == &dark ? "zero-power lights" : "no light") << ", mode " << to_string(mode));
-            const RenderResult r = render(*scene, room_camera<S>(), hard::tiny(mode));
+            const RenderResult r = render(*scene, lit_room_camera<S>(), hard::tiny(mode));
             HARD_REQUIRE_VALID(r.film);
             CHECK(max_pixel(r.film) == 0.0);
             // Nothing to emit: no photon is traced or stored.
@@ -147,12 +147,12 @@ TEMPLATE_TEST_CASE("a spotlight of 0.01 degrees lights its spot, finitely, in ev
     // A 0.01-degree cone 2 m above the floor lights a spot 0.35 mm wide: far below a pixel, so the
     // image shows only its reflections; what matters is a finite image and the light's power
     // conserved in the photons that reach the floor.
-    const auto scene = room<S>([](DefaultScene<S>& sc) {
+    const auto scene = lit_room<S>([](DefaultScene<S>& sc) {
         sc.add_light(PointLight<S>{{0, 2, 0}, Rgb<S>(S(1)), Cone<S>({0, -1, 0}, S(0.01))});
     });
     for (const RenderMode mode : all_modes) {
         INFO("mode " << to_string(mode));
-        const RenderResult r = render(scene, room_camera<S>(), hard::tiny(mode));
+        const RenderResult r = render(scene, lit_room_camera<S>(), hard::tiny(mode));
         HARD_REQUIRE_VALID(r.film);
     }
     const TracedPhotons traced =

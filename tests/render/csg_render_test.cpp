@@ -96,7 +96,7 @@ std::optional<Vec3<double>> sphere_root(const Vec3<double>& o, const Vec3<double
 
 }  // namespace
 
-TEST_CASE("a glass CSG lens (two spheres intersected) focuses the caustic the analytic faces predict", "[csg][render]") {
+TEST_CASE("a glass CSG lens (two spheres intersected) focuses the caustic the analytic faces predict", "[csg][render][heavy]") {
     // Biconvex lens: unit spheres 1.4 apart, 0.6 thick, aperture radius sqrt(0.51); focal length
     // 1.11, so a light 3 above it is focused about 1.8 below it, on the floor.
     const Vec3<double> center{0, 1.8, 0}, light = center + Vec3<double>{0, 3, 0};
@@ -155,7 +155,7 @@ TEST_CASE("a glass CSG lens (two spheres intersected) focuses the caustic the an
     CHECK(pm.film.all_finite_nonnegative());
 }
 
-TEST_CASE("a glass ball merged from two CSG hemispheres casts the analytic ball's caustic", "[csg][render]") {
+TEST_CASE("a glass ball merged from two CSG hemispheres casts the analytic ball's caustic", "[csg][render][heavy]") {
     const Vec3<double> center{0, 1.2, 0}, light = center + Vec3<double>{0.8, 3, 0};
     const auto analytic = floor_scene(light, [&](DefaultScene<double>& s) {
         s.add(Sphere<double>(center, 0.6), s.add_material(Material<double>::glass(ior)));
@@ -191,7 +191,7 @@ TEST_CASE("a glass ball merged from two CSG hemispheres casts the analytic ball'
     CHECK(diff < 0.01 * total);  // measured: 0 (the hemispheres' hits are the sphere's own)
 }
 
-TEST_CASE("through a hole in an opaque CSG plate, shadow rays and photons light the floor alike", "[csg][render]") {
+TEST_CASE("through a hole in an opaque CSG plate, shadow rays and photons light the floor alike", "[csg][render][heavy]") {
     // A black plate (no indirect light from it) with a round hole, above the floor: the floor
     // under the hole is lit directly, which rt sees by shadow rays and sppm by photons.
     const Vec3<double> light{0, 4, 0};

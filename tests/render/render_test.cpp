@@ -90,7 +90,7 @@ TEST_CASE("the same seed gives the same image on 1 and 2 threads", "[render]") {
     }
 }
 
-TEST_CASE("photon mapping adds indirect light to ray tracing, and its modes agree", "[render]") {
+TEST_CASE("photon mapping adds indirect light to ray tracing, and its modes agree", "[render][heavy]") {
     const auto box = cornell::make_cornell_box<float>();
     RenderSettings s = small(RenderMode::rt);
     s.global_photons = 200'000;

@@ -49,7 +49,7 @@ bool identical(const Film& a, const Film& b) {
 
 }  // namespace
 
-TEST_CASE("sppm converges to the closed diffuse sphere's radiance, and its error falls with passes", "[sppm]") {
+TEST_CASE("sppm converges to the closed diffuse sphere's radiance, and its error falls with passes", "[sppm][heavy]") {
     const FurnaceSphere f;
     const double expected = FurnaceSphere::radiance();
     RenderSettings s = sppm_settings(32, 32, 32, 100'000);
@@ -147,7 +147,7 @@ std::vector<Rgb<double>> block_means(const Film& film, unsigned bx, unsigned by)
 
 }  // namespace
 
-TEST_CASE("sppm agrees with the path-traced reference on a diffuse box, block by block", "[sppm]") {
+TEST_CASE("sppm agrees with the path-traced reference on a diffuse box, block by block", "[sppm][heavy]") {
     const DiffuseBox box;
     RenderSettings ref = sppm_settings(32, 24, 1, 1);
     ref.mode = RenderMode::reference;
@@ -231,7 +231,7 @@ struct GlassBall {
 
 }  // namespace
 
-TEST_CASE("sppm renders the caustic of a point light through a glass ball, which the path tracer cannot", "[sppm]") {
+TEST_CASE("sppm renders the caustic of a point light through a glass ball, which the path tracer cannot", "[sppm][heavy]") {
     const GlassBall ball;
     // The measuring window: pixels whose centre and four corners see the floor itself inside the
     // ball's shadow, with the floor area each covers (a quadrilateral, from its corners' rays).

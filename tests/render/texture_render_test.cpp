@@ -67,7 +67,7 @@ std::map<int, Rgb<double>> square_means(const Film& film, const std::vector<int>
 
 }  // namespace
 
-TEST_CASE("a checker floor's photon-mapped radiance matches sppm square by square", "[texture][render]") {
+TEST_CASE("a checker floor's photon-mapped radiance matches sppm square by square", "[texture][render][heavy]") {
     const CheckerBox box;
     constexpr unsigned width = 48, height = 36;
     const std::vector<int> square = box.squares(width, height);
