@@ -222,7 +222,14 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         std::cout << ", power " << rgb(photon::light_power(light)) << " W, intensity "
                   << rgb(photon::radiant_intensity(light)) << " W/sr";
         if (const auto& cone = photon::light_cone(light))
-            std::cout << ", cone " << vec(cone->axis()) << " half-angle " << cone->half_angle_degrees() << " deg";
+            std::cout << ", " << (cone->is_soft() ? "spotlight profile " : "cone ") << vec(cone->axis()) << " half-angle "
+                      << cone->half_angle_degrees() << " deg";
+        const auto& falloff = photon::light_falloff(light);
+        using Kind = std::remove_cvref_t<decltype(falloff)>::Kind;
+        if (falloff.kind == Kind::constant) std::cout << ", no falloff";
+        if (falloff.kind == Kind::fade)
+            std::cout << ", fade 1 / (1 + (d / " << falloff.distance << ")^" << falloff.power << ")";
+        if (!photon::light_casts_shadows(light)) std::cout << ", shadowless";
         std::cout << '\n';
     }
     std::map<std::string, std::size_t> kinds;

@@ -249,6 +249,11 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): area light
         CHECK(l.position == Vec3<double>(0, 1.5, 0));
         CHECK(l.power.x == Approx(4 * pi_d * 2.5).epsilon(1e-12));
         CHECK(radiant_intensity(b.scene.lights()[0]).y == Approx(2.5).epsilon(1e-12));
+        // POV-Ray's fade 2 / (1 + (d / D)^2), exactly: the physical I / d^2 far from the light.
+        CHECK(l.falloff.kind == Falloff<double>::Kind::fade);
+        CHECK(l.falloff.distance == 0.001);
+        CHECK(l.falloff.power == 2);
+        CHECK(l.casts_shadows);
         CHECK(w.empty());
     }
     SECTION("area_light ... circular orient with |A1| = |A2| = 2R is a sphere light of radius R") {
@@ -265,22 +270,31 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): area light
         CHECK(b.settings.shadow_samples == 81);  // POV-Ray's 9 x 9 grid, as no shadow_samples is given
         CHECK(w.empty());
     }
-    SECTION("without fade_power 2: a warning and the intensity pi * colour") {
+    SECTION("without a fade, POV-Ray's light does not fall off: intensity pi * colour, constant irradiance") {
         const auto b = built(
             "light_source { <0, 5, 0>, rgb <1, 2, 3> }\n"
             "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
             &w);
         CHECK(radiant_intensity(b.scene.lights()[0]).z == Approx(3 * pi_d));
-        REQUIRE(w.size() == 1);
-        CHECK_THAT(w[0].message, Contains("without `fade_distance` and `fade_power 2`"));
-        CHECK(w[0].location.line == 1);
+        const Falloff<double>& f = light_falloff(b.scene.lights()[0]);
+        CHECK(f.kind == Falloff<double>::Kind::constant);
+        CHECK(f.irradiance_per_intensity(40.0) == 1.0);
+        CHECK(w.empty());
         const std::string line = "light_source { <0, 5, 0>, rgb 1 fade_distance 2 fade_power 1 }";
         const auto b1 = built(line + "\ncamera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n", &w);
         CHECK(radiant_intensity(b1.scene.lights()[0]).x == Approx(2 * pi_d * 4));
-        CHECK_THAT(w.back().message, Contains("fade_power 1"));
-        CHECK(w.back().location.column == line.find("fade_power") + 1);
+        const Falloff<double>& f1 = light_falloff(b1.scene.lights()[0]);
+        CHECK(f1.kind == Falloff<double>::Kind::fade);
+        CHECK(f1.power == 1);
+        // pi * colour * 2 / (1 + d / 2) at d = 6: pi / 2.
+        CHECK(radiant_intensity(b1.scene.lights()[0]).x * f1.irradiance_per_intensity(6.0) == Approx(pi_d / 2));
+        // fade_power 0 or fade_distance 0: POV-Ray does not fade.
+        const auto b2 = built("light_source { <0, 5, 0>, rgb 1 fade_distance 2 }\n"
+                              "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n", &w);
+        CHECK(light_falloff(b2.scene.lights()[0]).kind == Falloff<double>::Kind::constant);
+        CHECK(w.empty());
     }
-    SECTION("a spotlight with radius = falloff emits into that cone; other spotlights warn") {
+    SECTION("a spotlight with radius = falloff emits into that cone; others keep POV-Ray's soft profile") {
         const auto b = built(
             "light_source { <0, 5, 0>, rgb 1 / (2*pi) spotlight radius 30 falloff 30 tightness 0\n"
             "  point_at <0, 0, 0> fade_distance 1 fade_power 2 }\n"
@@ -296,27 +310,33 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): area light
             "light_source { <0, 5, 0>, rgb 1 spotlight point_at 0 fade_distance 1 fade_power 2 }\n"
             "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
             &w);
-        // POV-Ray's default profile: 1 inside 30 degrees, a smooth step to 0 at 45. Same power:
-        // 1 - cos(half) = (1 - cos 30) + (cos 30 - cos 45) / 2, half = 38.137 degrees.
-        CHECK(light_cone(b2.scene.lights()[0])->half_angle_degrees() == Approx(38.137).epsilon(1e-4));
-        CHECK_THAT(all_messages(w), Contains("sharp edge"));
-        // POV-Ray's radiosity Cornell box: `radius -90 falloff 90 tightness 1` is a cosine lobe,
-        // power pi I, the cone of solid angle pi: half-angle 60 degrees.
+        // POV-Ray's default profile: 1 inside 30 degrees, a smooth step to 0 at 45, whose power
+        // over the axial intensity is 2 pi ((1 - cos 30) + (cos 30 - cos 45) / 2).
+        const auto& cone2 = light_cone(b2.scene.lights()[0]);
+        CHECK(cone2->half_angle_degrees() == Approx(45));
+        CHECK(cone2->is_soft());
+        CHECK(cone2->effective_solid_angle() ==
+              Approx(2 * pi_d * ((1 - std::cos(pi_d / 6)) + (std::cos(pi_d / 6) - std::cos(pi_d / 4)) / 2)).epsilon(1e-9));
+        const double c_mid = (std::cos(pi_d / 6) + std::cos(pi_d / 4)) / 2;  // halfway in cos: the step's 1/2
+        CHECK(cone2->profile(Vec3<double>(std::sqrt(1 - c_mid * c_mid), -c_mid, 0)) == Approx(0.5).epsilon(1e-9));
+        CHECK(w.empty());
+        // POV-Ray's radiosity Cornell box: `radius -90 falloff 90 tightness 1` is a cosine lobe of power pi I.
         const auto b3 = built(
             "light_source { <0, 5, 0>, rgb 1 spotlight radius -90 falloff 90 tightness 1 point_at 0\n"
             "  fade_distance 1 fade_power 2 }\n"
             "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
             &w);
-        CHECK(light_cone(b3.scene.lights()[0])->half_angle_degrees() == Approx(60).epsilon(1e-5));
+        CHECK(light_cone(b3.scene.lights()[0])->effective_solid_angle() == Approx(pi_d).epsilon(1e-9));
     }
-    SECTION("transforms move lights; shadowless and looks_like warn") {
+    SECTION("transforms move lights; shadowless casts no shadows; looks_like warns") {
         const auto b = built(
             "light_source { <0, 1, 0>, rgb 1 fade_distance 1 fade_power 2 translate <1, 0, 0>\n"
             "  shadowless looks_like { sphere { 0, 0.1 } } }\n"
             "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
             &w);
         CHECK(std::get<PointLight<double>>(b.scene.lights()[0]).position == Vec3<double>(1, 1, 0));
-        CHECK_THAT(all_messages(w), Contains("`shadowless` is ignored") && Contains("`looks_like` is ignored"));
+        CHECK_FALSE(std::get<PointLight<double>>(b.scene.lights()[0]).casts_shadows);
+        CHECK_THAT(all_messages(w), !Contains("shadowless") && Contains("`looks_like` is ignored"));
     }
 }
 

@@ -2,7 +2,7 @@
 #pragma once
 // Direct light by shadow rays (paper, section 5.1): one ray per point light, n x n stratified
 // rays per sphere light, whose unoccluded estimate is exact and whose partial occlusion gives
-// soft shadows. Phong highlights are added here only, for direct light.
+// soft shadows; none for a light that casts no shadows. Phong highlights are added here only, for direct light.
 
 #include <cmath>
 #include <vector>
@@ -58,10 +58,11 @@ template <class SceneT, Scalar S>
         const bool area = sampler.is_area();
         const unsigned grid = area ? strata_per_axis(shadow_samples) : 1u;
         const unsigned count = grid * grid;
+        const bool shadows = light_casts_shadows(light);  // a `shadowless` light: no shadow rays
         // All shadow rays to this light stay in the box around their origin and the light
         // (moved by the origin's offset, as the rays are), so only the objects touching that
         // box can block them: found once here, not per ray.
-        const bool culled = count > 1;
+        const bool culled = shadows && count > 1;
         if (culled) {
             const Vec3<S> reach = light_center(light) + (shadow_origin - x);
             BBox<S> region = BBox<S>::of_point(shadow_origin);
@@ -75,9 +76,11 @@ template <class SceneT, Scalar S>
             if (!incident) continue;
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0))) continue;
-            ++ctx.rays.shadow;
-            const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
-            if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
+            if (shadows) {
+                ++ctx.rays.shadow;
+                const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
+                if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
+            }
             Rgb<S> f = brdf * cos_theta;
             if (phong > S(0)) f += Rgb<S>(phong_highlight(material, n, wo, incident->direction));
             sum += f * incident->irradiance;

@@ -114,8 +114,10 @@ private:
             if (!sample) continue;
             const S cos_theta = glm::dot(n, sample->direction);
             if (!(cos_theta > S(0))) continue;
-            ++ctx.rays.shadow;
-            if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;
+            if (light_casts_shadows(light)) {
+                ++ctx.rays.shadow;
+                if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;
+            }
             const S weight = sample->delta || !mis_ ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
             const Rgb<S> f = brdf * (cos_theta * weight) + Rgb<S>(phong_highlight(material, n, wo, sample->direction));
             total += f * sample->radiance / sample->pdf;
@@ -138,7 +140,7 @@ private:
                 continue;
             }
             // Seen as the vertex's shadow ray would see it: through objects without shadows too.
-            if (!(hit->t < t_hit)) {
+            if (!(hit->t < t_hit) && light_casts_shadows(light)) {
                 if (scene_.objects()[surface->object].options.casts_shadow) continue;
                 ++ctx.rays.shadow;
                 if (scene_.occluded(Ray<S>{ray.origin, ray.direction, hit->t})) continue;

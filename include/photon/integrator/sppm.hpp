@@ -131,11 +131,12 @@ template <class SceneT>
                 if (is_black(plan.power[l])) continue;
                 const Vec3<S> dir = sample_emission_direction(lights[l], settings.emission, rng);
                 Ray<S> ray{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
-                Rgb<S> power = plan.power[l];
+                Rgb<S> power = plan.power[l] * emission_weight(lights[l], dir);
                 for (unsigned depth = 0; depth < settings.max_photon_depth; ++depth) {
                     const auto surface = scene.intersect(ray);
                     ++block.rays;
                     if (!surface) break;
+                    if (depth == 0) power *= first_hit_scale(lights[l], surface->hit.point);  // the light's falloff
                     const Material<S>& material = *surface->material;
                     const Facing<S> f = facing(surface->hit.normal, ray.direction);
                     // Depth 0 is direct light, which the shadow rays of the camera pass cover.

@@ -2,7 +2,9 @@
 #pragma once
 // Lights as the two passes see them: photon emission (pass 1) and incident light at a shading
 // point for shadow rays (pass 2). Point and spherical lights share both: a point light is the
-// limit of a sphere light of radius 0.
+// limit of a sphere light of radius 0. A light's falloff (falloff.hpp) and its cone's profile
+// (cone.hpp) scale both alike: direct light by g(d) and the profile, photons by the profile at
+// emission and by g(d) d^2 at their first hit (first_hit_scale).
 
 #include <cmath>
 #include <optional>
@@ -40,18 +42,48 @@ template <Scalar S> [[nodiscard]] const Rgb<S>& light_power(const Light<S>& ligh
 template <Scalar S> [[nodiscard]] const std::optional<Cone<S>>& light_cone(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) -> const std::optional<Cone<S>>& { return l.cone; }, light);
 }
+template <Scalar S> [[nodiscard]] const Falloff<S>& light_falloff(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) -> const Falloff<S>& { return l.falloff; }, light);
+}
+template <Scalar S> [[nodiscard]] bool light_casts_shadows(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) { return l.casts_shadows; }, light);
+}
 template <Scalar S> void validate(const Light<S>& light) {
     std::visit([](const auto& l) { l.validate(); }, light);
 }
 
-/// Solid angle the light emits into: 4 pi, or its cone's.
+/// Power over axial intensity: 4 pi, or its cone's solid angle weighted by the cone's profile.
 template <Scalar S> [[nodiscard]] S emission_solid_angle(const Light<S>& light) noexcept {
     const auto& cone = light_cone(light);
-    return cone ? cone->solid_angle() : S(4) * pi<S>;
+    return cone ? cone->effective_solid_angle() : S(4) * pi<S>;
 }
-/// Radiant intensity in W/sr per channel, the same in every direction it emits into.
+/// Radiant intensity in W/sr per channel along the cone's axis (in every direction without a
+/// cone or inside a sharp one). With a falloff other than 1/d^2, `power` is the power of the
+/// physical light of this intensity and profile, what the photons leave with before their first
+/// hit rescales them (first_hit_scale).
 template <Scalar S> [[nodiscard]] Rgb<S> radiant_intensity(const Light<S>& light) noexcept {
     return light_power(light) / emission_solid_angle(light);
+}
+/// Intensity towards unit `direction` (leaving the light) relative to the axial one: 1 without a cone.
+template <Scalar S> [[nodiscard]] S intensity_profile(const Light<S>& light, const Vec3<S>& direction) noexcept {
+    const auto& cone = light_cone(light);
+    return cone ? cone->profile(direction) : S(1);
+}
+/// Factor on the power of a photon drawn uniformly over the light's emitting directions (what
+/// sample_emission_direction does) leaving along unit `direction`: the profile over its mean,
+/// 1 for a sharp cone or none.
+template <Scalar S> [[nodiscard]] S emission_weight(const Light<S>& light, const Vec3<S>& direction) noexcept {
+    const auto& cone = light_cone(light);
+    if (!cone || !cone->is_soft()) return S(1);
+    return cone->profile(direction) * (cone->solid_angle() / cone->effective_solid_angle());
+}
+/// Factor on the power of a photon from `light` at its first surface hit `p`: g(d) d^2 for the
+/// distance d from the light's centre (falloff.hpp), so that the first-hit irradiance follows
+/// the light's falloff; exactly 1 for the physical light. Later bounces are physical.
+template <Scalar S> [[nodiscard]] S first_hit_scale(const Light<S>& light, const Vec3<S>& p) noexcept {
+    const Falloff<S>& falloff = light_falloff(light);
+    if (falloff.is_physical()) return S(1);
+    return falloff.relative_to_inverse_square(glm::length(p - light_center(light)));
 }
 
 /// Unit emission direction, uniform over the light's emitting directions.
@@ -90,9 +122,10 @@ template <Scalar S> struct IncidentLight {
 };
 
 /// A light as seen from one shading point `x`: what every sample shares (the direction to the
-/// centre, the cone the sphere subtends, its frame) is computed once, so n x n shadow samples
-/// cost one square root each. Sphere lights are sampled uniformly in the solid angle they
-/// subtend, so the estimate is exact for an unoccluded light.
+/// centre, the cone the sphere subtends, its frame, the falloff at x's distance from the centre)
+/// is computed once, so n x n shadow samples cost one square root each. Sphere lights are sampled
+/// uniformly in the solid angle they subtend, so the estimate is exact for an unoccluded light
+/// (with its falloff evaluated at the centre's distance, as POV-Ray does for its area lights).
 template <Scalar S> class IncidentSampler {
 public:
     IncidentSampler(const Light<S>& light, const Vec3<S>& x) noexcept : cone_(light_cone(light)) {
@@ -104,18 +137,23 @@ public:
         const S dist = std::sqrt(d2);
         axis_ = to_center_ / dist;
         const Rgb<S> intensity = radiant_intensity(light);
+        const Falloff<S>& falloff = light_falloff(light);
         if (radius_ == S(0)) {
             distance_ = dist;
-            value_ = intensity / d2;
+            value_ = falloff.is_physical() ? intensity / d2 : intensity * falloff.irradiance_per_intensity(dist);
             return;
         }
+        relative_ = falloff.relative_to_inverse_square(dist);
         // Cone of directions subtended by the sphere; 1 - cos computed as sin^2 / (1 + cos).
         const S sin2_max = radius_ * radius_ / d2;
         one_minus_cos_ = sin2_max / (S(1) + std::sqrt(std::max(S(0), S(1) - sin2_max)));
         frame_ = Frame<S>::from_normal(axis_);
         solid_angle_ = cone_solid_angle_1mc(one_minus_cos_);
-        value_ = intensity / (pi<S> * radius_ * radius_) * solid_angle_;
+        value_ = intensity / (pi<S> * radius_ * radius_) * solid_angle_ * relative_;
     }
+
+    /// The falloff over the physical one at x (Falloff::relative_to_inverse_square): 1 when physical.
+    [[nodiscard]] S falloff_scale() const noexcept { return relative_; }
 
     /// Whether more than one sample can differ (an area light).
     [[nodiscard]] bool is_area() const noexcept { return radius_ > S(0); }
@@ -141,21 +179,23 @@ public:
     [[nodiscard]] std::optional<IncidentLight<S>> sample(Vec2<S> u) const noexcept {
         if (!visible_) return std::nullopt;
         if (radius_ == S(0)) {
-            if (cone_ && !cone_->contains(-axis_)) return std::nullopt;
-            return IncidentLight<S>{axis_, distance_, value_};
+            const S profile = cone_ ? cone_->profile(-axis_) : S(1);
+            if (!(profile > S(0))) return std::nullopt;
+            return IncidentLight<S>{axis_, distance_, value_ * profile};
         }
         const Vec3<S> dir = frame_.to_world(Vec3<S>{uniform_cone_1mc(u, one_minus_cos_)});
-        if (cone_ && !cone_->contains(-dir)) return std::nullopt;
+        const S profile = cone_ ? cone_->profile(-dir) : S(1);
+        if (!(profile > S(0))) return std::nullopt;
         const S b = glm::dot(dir, to_center_);
         const Vec3<S> off = to_center_ - b * dir;
         const S t = b - std::sqrt(std::max(S(0), radius_ * radius_ - glm::dot(off, off)));
-        return IncidentLight<S>{dir, t, value_};
+        return IncidentLight<S>{dir, t, value_ * profile};
     }
 
 private:
     const std::optional<Cone<S>>& cone_;
     Vec3<S> to_center_{}, axis_{};
-    S radius_ = S(0), distance_ = S(0), one_minus_cos_ = S(0), solid_angle_ = S(0);
+    S radius_ = S(0), distance_ = S(0), one_minus_cos_ = S(0), solid_angle_ = S(0), relative_ = S(1);
     Frame<S> frame_{};
     Rgb<S> value_{};
     bool visible_ = false;

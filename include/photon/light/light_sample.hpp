@@ -37,7 +37,9 @@ template <Scalar S>
     const auto incident = sampler.sample(u);
     if (!incident) return std::nullopt;
     if (!sampler.is_area()) return LightSample<S>{incident->direction, incident->distance, incident->irradiance, S(1), true};
-    return LightSample<S>{incident->direction, incident->distance, surface_radiance(light), sampler.sample_pdf(), false};
+    // The profile and falloff at x scale the sphere's radiance as they scale its irradiance.
+    const S scale = sampler.falloff_scale() * intensity_profile(light, -incident->direction);
+    return LightSample<S>{incident->direction, incident->distance, surface_radiance(light) * scale, sampler.sample_pdf(), false};
 }
 
 /// Density per steradian with which sample_light(light, x, .) draws unit `direction` (0 for a
@@ -50,7 +52,9 @@ template <Scalar S>
 /// Where a ray meets a sphere light's surface from outside, and what it sees there.
 template <Scalar S> struct LightHit {
     S t;              ///< ray parameter of the near intersection, > 0
-    Rgb<S> radiance;  ///< emitted back along the ray: 0 if that direction is outside the light's cone
+    /// Emitted back along the ray, times the cone's profile for that direction (0 outside it) and
+    /// the falloff at the ray's origin (as sample_light sees it from there).
+    Rgb<S> radiance;
 };
 
 /// The near intersection of `ray` (unit direction) with a sphere light; nothing for a point
@@ -65,9 +69,11 @@ template <Scalar S> [[nodiscard]] std::optional<LightHit<S>> intersect_light(con
     if (disc < S(0)) return std::nullopt;
     const S t = -b - std::sqrt(disc);
     if (!(t > S(0))) return std::nullopt;
-    const auto& cone = light_cone(light);
-    if (cone && !cone->contains(-ray.direction)) return LightHit<S>{t, Rgb<S>(S(0))};
-    return LightHit<S>{t, surface_radiance(light)};
+    const S profile = intensity_profile(light, -ray.direction);
+    if (!(profile > S(0))) return LightHit<S>{t, Rgb<S>(S(0))};
+    const Falloff<S>& falloff = light_falloff(light);
+    const S scale = falloff.is_physical() ? S(1) : falloff.relative_to_inverse_square(glm::length(oc));
+    return LightHit<S>{t, surface_radiance(light) * (profile * scale)};
 }
 
 }  // namespace photon

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cone.hpp"
+#include "falloff.hpp"
 
 namespace photon {
 
@@ -16,12 +17,15 @@ template <Scalar S> struct PointLight {
     Vec3<S> position{};
     Rgb<S> power{S(0)};
     std::optional<Cone<S>> cone{};
+    Falloff<S> falloff{};        ///< physical 1/d^2 unless set (POV-Ray's fades)
+    bool casts_shadows = true;   ///< false: direct light without shadow rays (POV-Ray's `shadowless`)
 
     /// Throws std::invalid_argument on a non-finite position or a negative or non-finite power.
     void validate() const {
         if (!is_finite(position)) throw std::invalid_argument("light: position must be finite");
         if (!is_finite(power) || min_component(power) < S(0))
             throw std::invalid_argument("light: power must be finite and >= 0 in every channel");
+        falloff.validate();
     }
 };
 

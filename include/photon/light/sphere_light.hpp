@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cone.hpp"
+#include "falloff.hpp"
 
 namespace photon {
 
@@ -18,6 +19,8 @@ template <Scalar S> struct SphereLight {
     S radius = S(0.1);
     Rgb<S> power{S(0)};
     std::optional<Cone<S>> cone{};
+    Falloff<S> falloff{};        ///< physical 1/d^2 unless set (POV-Ray's fades)
+    bool casts_shadows = true;   ///< false: direct light without shadow rays (POV-Ray's `shadowless`)
 
     void validate() const {
         if (!is_finite(center)) throw std::invalid_argument("light: position must be finite");
@@ -25,6 +28,7 @@ template <Scalar S> struct SphereLight {
             throw std::invalid_argument("light: area light radius must be positive and finite");
         if (!is_finite(power) || min_component(power) < S(0))
             throw std::invalid_argument("light: power must be finite and >= 0 in every channel");
+        falloff.validate();
     }
 };
 

@@ -44,7 +44,8 @@ struct LightPlan {
     bool emits = true;        ///< photons are shot from it
     std::string reason;       ///< why not (empty when it emits)
     std::size_t global_photons = 0, caustic_photons = 0;  ///< its share of each pass
-    /// Fraction of its power the pilot saw reach what the camera sees (visible_power.hpp); -1:
+    /// Fraction of its power the pilot saw reach what the camera sees (visible_power.hpp; above 1
+    /// for a light whose falloff is not 1/d^2 whose photons bring more than its nominal power); -1:
     /// not measured (no camera, one light, no global pass, or `lights=on`).
     double visible_fraction = -1.0;
 };

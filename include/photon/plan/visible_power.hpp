@@ -51,7 +51,9 @@ template <class SceneT>
 }
 
 /// Per light, the fraction of its emitted power that the pilot saw land on a diffuse point the
-/// camera sees, at the first hit or the second (weighted by the bounce's reflectance). Lights
+/// camera sees, at the first hit or the second (weighted by the bounce's reflectance). For a
+/// light whose falloff is not 1/d^2 the photons' first-hit rescaling counts too, so the
+/// "fraction" is the visible power over the nominal power and may exceed 1. Lights
 /// with `emits[l] == false` are not measured (0). Deterministic: photon i of light l draws from
 /// its own random stream.
 template <class SceneT>
@@ -69,10 +71,14 @@ template <class SceneT>
             Pcg32 rng(pilot.seed ^ 0x70696c6f74ULL, std::uint64_t(l) * pilot.photons_per_light + i);
             const Vec3<S> dir = sample_emission_direction(lights[l], sampler, rng);
             Ray<S> ray{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
-            double weight = 1.0;
+            // The power the photon would carry: its direction's share of the profile, and the
+            // light's falloff at its first hit, so a light that does not fall off (POV-Ray's
+            // default) counts the power its photons really bring, not its nominal power.
+            double weight = double(emission_weight(lights[l], dir));
             for (unsigned hit = 0; hit < 2; ++hit) {
                 const auto surface = scene.intersect(ray);
                 if (!surface) break;
+                if (hit == 0) weight *= double(first_hit_scale(lights[l], surface->hit.point));
                 const Material<S>& material = *surface->material;
                 if (material.has_diffuse() && camera_sees(scene, camera, surface->hit.point)) {
                     seen += weight;
@@ -104,7 +110,9 @@ template <Scalar S>
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (l < emits.size() && !emits[l]) continue;
         power[l] = std::max(0.0, double(average(light_power(lights[l]))));
-        visible[l] = power[l] * std::sqrt(std::clamp(l < fraction.size() ? fraction[l] : 0.0, 0.0, 1.0));
+        // Not clamped to 1: a non-physical light's photons may bring more than its nominal power.
+        const double f = l < fraction.size() && std::isfinite(fraction[l]) ? std::max(0.0, fraction[l]) : 0.0;
+        visible[l] = power[l] * std::sqrt(f);
         power_sum += power[l];
         visible_sum += visible[l];
     }

@@ -156,18 +156,21 @@ TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t sa
     return result;
 }
 
-/// Follows one photon from `ray` with `power`. `caustic_only` stops at the first diffuse event
+/// Follows one photon of `light` from `ray` with `power`, rescaled at its first hit by the light's
+/// falloff (first_hit_scale; 1 for a physical light). `caustic_only` stops at the first diffuse event
 /// and stores only after a specular bounce (L S+ D); otherwise paths are stored per `store`, and
 /// when `unaimed` (the caustic pass cannot emit along this photon's first ray) its L S+ D hits
 /// also go to block.unaimed_caustics.
 template <class SceneT, Scalar S>
-void trace_photon_path(const SceneT& scene, Ray<S> ray, Rgb<S> power, const PhotonTracingSettings& settings,
-                       bool caustic_only, bool unaimed, Pcg32& rng, PhotonBlock& block) {
+void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, Rgb<S> power,
+                       const PhotonTracingSettings& settings, bool caustic_only, bool unaimed, Pcg32& rng,
+                       PhotonBlock& block) {
     bool specular_only = true;
     for (unsigned depth = 0; depth < settings.max_depth; ++depth) {
         const auto surface = scene.intersect(ray);
         ++block.rays;
         if (!surface) return;
+        if (depth == 0) power *= first_hit_scale(light, surface->hit.point);
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(surface->hit.normal, ray.direction);
         if (caustic_only && depth == 0 && !material.is_specular()) return;
@@ -222,7 +225,8 @@ template <class SceneT>
         const Vec3<S> dir = sample_emission_direction(light, settings.sampler, rng);
         const Vec3<S> origin = sample_emission_origin(light, dir, rng.uniform2<S>());
         const bool unaimed = settings.collect_unaimed_caustics && !aim.covers(l, dir);
-        detail::trace_photon_path(scene, Ray<S>{origin, dir}, plan.scale[l], settings, false, unaimed, rng, block);
+        detail::trace_photon_path(scene, light, Ray<S>{origin, dir}, plan.scale[l] * emission_weight(light, dir), settings,
+                                  false, unaimed, rng, block);
     });
 }
 
@@ -253,13 +257,13 @@ template <class SceneT>
         const std::size_t l = plan.light_of(i);
         const Light<S>& light = lights[l];
         const auto sample = sample_cone_mixture(aim.cones[l], aim.total_solid_angle[l], rng);
-        const auto& cone = light_cone(light);
-        if (cone && !cone->contains(sample.direction)) return;
-        // The photon carries I / (pdf * n): intensity over the density it was drawn with, where
-        // plan.scale = power / n and I = power / emission solid angle.
-        const Rgb<S> power = plan.scale[l] / (emission_solid_angle(light) * sample.pdf);
+        const S profile = intensity_profile(light, sample.direction);
+        if (!(profile > S(0))) return;
+        // The photon carries I / (pdf * n): intensity along its direction over the density it was
+        // drawn with, where plan.scale = power / n and I = profile * power / emission solid angle.
+        const Rgb<S> power = plan.scale[l] * (profile / (emission_solid_angle(light) * sample.pdf));
         const Vec3<S> origin = sample_emission_origin(light, sample.direction, rng.uniform2<S>());
-        detail::trace_photon_path(scene, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
+        detail::trace_photon_path(scene, light, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
     });
 }
 
