@@ -121,6 +121,9 @@ TEMPLATE_TEST_CASE("rays leaving and entering every primitive, at every scale, n
               "ellipsoid", at);
         check(surface_rays(Transformed<Box<S>>(Box<S>(Vec3<S>(S(-1)), Vec3<S>(S(1))), place), at, true, rng, trials),
               trials, "rotated box", at);
+        // The same ellipsoid as POV-Ray's quadric, its map folded into its numbers.
+        const Quadric<S> unit(QuadricCoefficients<S>{Vec3<S>(S(1)), Vec3<S>(S(0)), Vec3<S>(S(0)), S(-1)});
+        check(surface_rays(unit.transformed(place), at, true, rng, trials), trials, "quadric ellipsoid", at);
     }
 }
 
