@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -20,16 +21,20 @@ struct PolygonFrame {
     glm::dvec3 origin{0.0}, u{1, 0, 0}, v{0, 1, 0}, w{0, 0, 1};
 };
 
-/// The frame of `points`, or nothing when they are all on one line or not in one plane (farther
-/// from it than 1e-9 of their extent). `points` are in the order written; only their set matters.
+/// The frame of `points`, or nothing when they are all on one line or not in one plane: farther
+/// from it than 1e-9 of their extent, or than S's rounding of their coordinates (a polygon moved
+/// in double and stored in float stays flat).
 template <Scalar S> [[nodiscard]] std::optional<PolygonFrame> polygon_frame(const std::vector<Vec3<S>>& points) {
     if (points.size() < 3) return std::nullopt;
     PolygonFrame f;
     f.origin = glm::dvec3(points[0]);
-    double extent = 0.0;
-    for (const auto& p : points) extent = std::max(extent, glm::length(glm::dvec3(p) - f.origin));
+    double extent = 0.0, magnitude = 0.0;
+    for (const auto& p : points) {
+        extent = std::max(extent, glm::length(glm::dvec3(p) - f.origin));
+        magnitude = std::max(magnitude, double(max_component(glm::abs(p))));
+    }
     if (!(extent > 0.0) || !std::isfinite(extent)) return std::nullopt;
-    const double tiny = 1e-9 * extent;
+    const double tiny = std::max(1e-9 * extent, 64.0 * double(std::numeric_limits<S>::epsilon()) * magnitude);
     std::size_t i = 1;
     while (i < points.size() && !(glm::length(glm::dvec3(points[i]) - f.origin) > tiny)) ++i;
     if (i == points.size()) return std::nullopt;
