@@ -123,7 +123,7 @@ TEST_CASE("polygon: loops closed by their first point, 2D and 3D points, transfo
     CHECK_THAT(all_messages(inv.warnings), Contains("`inverse` on a `polygon` is ignored: it has no inside"));
 }
 
-TEST_CASE("quadric and polygon: export-pov writes them back; inside() and trace() answer", "[dsl][quadric][polygon][export]") {
+TEST_CASE("quadric and polygon: export-pov writes them back, inside() and trace() answer", "[dsl][quadric][polygon][export]") {
     const std::string text = std::string(stage) +
                              "quadric { <1, 0, 1>, <0, 0.5, 0>, <0, -1, 0>, -2 rotate 30*z pigment { rgb 0.5 } }\n"
                              "polygon { 5, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0> translate z }\n";

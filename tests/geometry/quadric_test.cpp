@@ -108,7 +108,7 @@ TEMPLATE_TEST_CASE("quadric: coefficients scaled by 1e30 or 1e-30 are the same s
     }
 }
 
-TEMPLATE_TEST_CASE("quadric: the infinite cylinder gives a long cylinder's wall hits; its box is infinite along y only",
+TEMPLATE_TEST_CASE("quadric: the infinite cylinder gives a long cylinder's wall hits, its box infinite along y only",
                    "[geometry][quadric]", float, double) {
     using S = TestType;
     const Affine<S> map = Affine<S>::scale({S(0.3), 1, S(0.3)}).then(Affine<S>::translate({1, 0, 2}));
