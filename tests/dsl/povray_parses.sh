@@ -13,10 +13,21 @@ mkdir -p "$work" || exit 1
 name=$(basename "$scene" .pov)-$(basename "$header" .inc)
 # Run from the work directory: POV-Ray writes nothing else, and #include must not depend on it.
 cd "$work" || exit 1
-povray -D +W16 +H12 +HI"$header" +FE +O"$work/$name.exr" "$scene" >"$work/$name.log" 2>&1
-rc=$?
+run() {
+    povray -D +W16 +H12 +HI"$header" +FE +O"$work/$name.exr" "$scene" >"$work/$name.log" 2>&1
+    rc=$?
+}
+run
+# Once in a fresh-Debian run POV-Ray exited 1 before it began to parse (the log was not kept):
+# such a failure says nothing of the file, so it is shown and the render tried once more.
+if [ $rc -ne 0 ] && ! grep -q "Parsing" "$work/$name.log"; then
+    echo "povray exited $rc before parsing $scene; its output:"
+    tail -20 "$work/$name.log"
+    echo "trying once more"
+    run
+fi
 if [ $rc -ne 0 ] || grep -q "Parse Error\|Parse Warning\|Possible Parse" "$work/$name.log"; then
-    sed -n '/Parsing/,$p' "$work/$name.log" | head -40
+    if grep -q "Parsing" "$work/$name.log"; then sed -n '/Parsing/,$p' "$work/$name.log" | head -40; else tail -20 "$work/$name.log"; fi
     echo "povray failed on $scene with $header (exit status $rc)"
     exit 1
 fi

@@ -99,7 +99,7 @@ TEMPLATE_TEST_CASE("rays leaving and entering every primitive, at every scale, n
                    float, double) {
     using S = TestType;
     constexpr int trials = 4000;
-    Pcg32 rng(2024, 1);
+    Pcg32 rng(2024, 1), quadric_rng(2024, 2);
     for (const Placement<S>& at : placements<S>()) {
         const S r = at.size;
         const Vec3<S>& c = at.center;
@@ -121,6 +121,10 @@ TEMPLATE_TEST_CASE("rays leaving and entering every primitive, at every scale, n
               "ellipsoid", at);
         check(surface_rays(Transformed<Box<S>>(Box<S>(Vec3<S>(S(-1)), Vec3<S>(S(1))), place), at, true, rng, trials),
               trials, "rotated box", at);
+        // The same ellipsoid as POV-Ray's quadric, its map folded into its numbers (its own random
+        // stream, so that the shapes above keep theirs).
+        const Quadric<S> unit(QuadricCoefficients<S>{Vec3<S>(S(1)), Vec3<S>(S(0)), Vec3<S>(S(0)), S(-1)});
+        check(surface_rays(unit.transformed(place), at, true, quadric_rng, trials), trials, "quadric ellipsoid", at);
     }
 }
 

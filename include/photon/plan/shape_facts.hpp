@@ -18,6 +18,8 @@
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
 #include "../geometry/plane.hpp"
+#include "../geometry/polygon.hpp"
+#include "../geometry/quadric.hpp"
 #include "../geometry/sphere.hpp"
 #include "../geometry/torus.hpp"
 #include "../geometry/transformed.hpp"
@@ -65,19 +67,23 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     }
     else if constexpr (std::is_same_v<Shape, Disc<S>>) return "disc";
     else if constexpr (std::is_same_v<Shape, Torus<S>>) return "torus";
+    else if constexpr (std::is_same_v<Shape, Quadric<S>>) return shape.bounds().is_finite() ? "ellipsoid quadric" : "quadric";
+    else if constexpr (std::is_same_v<Shape, Polygon<S>>) return "polygon";
     else return "object";
 }
 
-/// A plane, a triangle or a disc (also transformed: an affine map keeps it flat): no point of it sees
+/// A plane, a triangle, a disc or a polygon (also transformed: an affine map keeps it flat): no point of it sees
 /// another, so light it reflects never lands on it again.
 template <class Shape> [[nodiscard]] constexpr bool is_flat(const Shape& shape) {
     using S = scalar_of<Shape>;
     if constexpr (is_transformed<Shape>::value) return is_flat(shape.shape());
-    else return std::is_same_v<Shape, Plane<S>> || std::is_same_v<Shape, Triangle<S>> || std::is_same_v<Shape, Disc<S>>;
+    else
+        return std::is_same_v<Shape, Plane<S>> || std::is_same_v<Shape, Triangle<S>> || std::is_same_v<Shape, Disc<S>> ||
+               std::is_same_v<Shape, Polygon<S>>;
 }
 
 /// A sphere, a box, a closed cylinder or a closed cone (also transformed: an affine map keeps it
-/// convex and closed). A torus is neither convex nor flat; an open cylinder or cone is not closed.
+/// convex and closed), or a quadric whose solid is bounded (then an ellipsoid). A torus is neither convex nor flat; an open cylinder or cone is not closed.
 /// A CSG intersection of convex solids and half-spaces (planes) is one when it is bounded; any
 /// other CSG (a merge, a difference, an inverse) is not known to be.
 template <class Shape> [[nodiscard]] bool is_convex_solid(const Shape& shape) {
@@ -96,6 +102,7 @@ template <class Shape> [[nodiscard]] bool is_convex_solid(const Shape& shape) {
         return true;
     }
     else if constexpr (std::is_same_v<Shape, Cylinder<S>> || std::is_same_v<Shape, TruncatedCone<S>>) return !shape.open();
+    else if constexpr (std::is_same_v<Shape, Quadric<S>>) return shape.bounds().is_finite();
     else return std::is_same_v<Shape, Sphere<S>> || std::is_same_v<Shape, Box<S>>;
 }
 

@@ -248,6 +248,37 @@ struct DiscShape {
 struct TorusShape {
     double major = 1, minor = 0.25;
 };
+/// `quadric { <A, B, C>, <D, E, F>, <G, H, I>, J }`: A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x +
+/// H y + I z + J = 0, solid where the left side is <= 0. Some of A to I is not zero.
+struct QuadricShape {
+    Vector3 squares{1, 1, 1}, mixed{0.0}, linear{0.0};
+    double constant = -1;
+};
+/// `polygon { N, points }`: the points as written (2D ones with z = 0), each loop closed by
+/// repeating its first point (the last one may stay open); in one plane, not all on one line.
+struct PolygonShape {
+    std::shared_ptr<const std::vector<Vector3>> points;
+};
+/// The loops of a polygon's points, POV-Ray's way: a loop ends at the point that repeats its first
+/// (within 1e-10 in every coordinate), the next point starts the next loop; the last loop is
+/// closed even when its first point is not repeated.
+[[nodiscard]] inline std::vector<std::vector<Vector3>> polygon_loops(const std::vector<Vector3>& points) {
+    std::vector<std::vector<Vector3>> loops;
+    for (const Vector3& p : points) {
+        if (loops.empty() || loops.back().empty()) {
+            if (loops.empty()) loops.emplace_back();
+            loops.back().push_back(p);
+            continue;
+        }
+        const Vector3 first = loops.back().front();
+        if (std::abs(p.x - first.x) < 1e-10 && std::abs(p.y - first.y) < 1e-10 && std::abs(p.z - first.z) < 1e-10)
+            loops.emplace_back();  // closed: the next point starts a new loop
+        else
+            loops.back().push_back(p);
+    }
+    if (!loops.empty() && loops.back().empty()) loops.pop_back();
+    return loops;
+}
 /// An OBJ file named in a mesh (`mesh { obj "file.obj" }`). The parser only records it; the build
 /// step reads it (mesh_files.hpp), so that reading a scene never opens a mesh file.
 struct MeshFile {
@@ -282,7 +313,8 @@ struct SkippedShape {
 };
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
-                           SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape>;
+                           SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape, QuadricShape,
+                           PolygonShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -316,7 +348,8 @@ struct Object {
 /// POV-Ray's keyword for the shape of an object (`sphere`, `union`, `light_source`, ...).
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
-                                     "light_source", "",    "",      "cylinder", "cone", "disc", "torus"};
+                                     "light_source", "",    "",      "cylinder", "cone", "disc", "torus",
+                                     "quadric",      "polygon"};
     static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);

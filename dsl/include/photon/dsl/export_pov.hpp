@@ -278,6 +278,13 @@ private:
             out_ << '\n';
         } else if (const auto* r = std::get_if<TorusShape>(&o.shape)) {
             out_ << "torus { " << num(r->major) << ", " << num(r->minor) << '\n';
+        } else if (const auto* q = std::get_if<QuadricShape>(&o.shape)) {
+            out_ << "quadric { " << vec(q->squares) << ", " << vec(q->mixed) << ", " << vec(q->linear) << ", "
+                 << num(q->constant) << '\n';
+        } else if (const auto* g = std::get_if<PolygonShape>(&o.shape)) {
+            out_ << "polygon { " << g->points->size();
+            for (const Vector3& point : *g->points) out_ << ", " << vec(point);
+            out_ << '\n';
         } else if (const auto* t = std::get_if<TriangleShape>(&o.shape)) {
             out_ << "triangle { " << vec(t->vertices[0]) << ", " << vec(t->vertices[1]) << ", " << vec(t->vertices[2])
                  << '\n';

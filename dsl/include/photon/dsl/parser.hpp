@@ -61,6 +61,7 @@ namespace photon::dsl {
 #include "parser/objects.hpp"
 #include "parser/mesh2.hpp"
 #include "parser/quadrics.hpp"
+#include "parser/quadric_polygon.hpp"
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/statements.hpp"

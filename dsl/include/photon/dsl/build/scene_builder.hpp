@@ -274,12 +274,18 @@ private:
         place(r, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
     }
+    std::optional<DefaultCsg<S>> csg_leaf(const QuadricShape& q, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(q, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
     /// Not solids (no inside), or not shapes.
     template <class Other> std::optional<DefaultCsg<S>> csg_leaf(const Other&, const Transform&) { return std::nullopt; }
     /// The shapes csg_leaf makes a leaf of.
     template <class Shape> static constexpr bool is_solid_shape(const Shape&) {
         return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape> ||
-               std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape>;
+               std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape> ||
+               std::is_same_v<Shape, QuadricShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -326,6 +332,16 @@ private:
     template <class F> void place(const TorusShape& tor, const Transform& t, F&& f) {
         if (tor.major == 0) return place(SphereShape{Vector3(0.0), tor.minor}, t, f);
         f(Transformed<Torus<S>>(Torus<S>(S(tor.major), S(tor.minor)), to_affine<S>(t)));
+    }
+    /// The quadric placed: its transformation folded into its numbers (in double, also for float);
+    /// with no quadratic term, the plane (half-space) it is. Handed to `f`.
+    template <class F> void place(const QuadricShape& q, const Transform& t, F&& f) {
+        if (q.squares == Vector3(0.0) && q.mixed == Vector3(0.0)) {  // G x + H y + I z + J <= 0
+            const double n = glm::length(q.linear);
+            return f(place(PlaneShape{q.linear, -q.constant / n}, t));
+        }
+        const QuadricCoefficients<S> c{Vec3<S>(q.squares), Vec3<S>(q.mixed), Vec3<S>(q.linear), S(q.constant)};
+        f(Quadric<S>(c).transformed(to_affine<double>(t)));
     }
     Plane<S> place(const PlaneShape& p, const Transform& t) {
         const Vector3 n = glm::normalize(p.normal);
@@ -390,6 +406,19 @@ private:
     }
     void add_shape(const TorusShape& tor, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(tor, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    void add_shape(const QuadricShape& q, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(q, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    /// The polygon's points moved by the transformation (an affine map keeps them in one plane and
+    /// keeps which points the even-odd rule fills).
+    void add_shape(const PolygonShape& g, const Transform& t, MaterialId m, ObjectOptions opt) {
+        std::vector<std::vector<Vec3<S>>> loops;
+        for (const auto& loop : polygon_loops(*g.points)) {
+            loops.emplace_back();
+            for (const Vector3& p : loop) loops.back().push_back(Vec3<S>(t.point(p)));
+        }
+        scene_->add(Polygon<S>(loops), m, opt);
     }
     void add_shape(const UnionShape&, const Transform&, MaterialId, ObjectOptions) {}
     void add_shape(const CsgShape&, const Transform&, MaterialId, ObjectOptions) {}

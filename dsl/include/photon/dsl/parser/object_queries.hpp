@@ -93,6 +93,11 @@ inline Numeric Parser::parse_object_query(const Token& f) {
             } else if constexpr (std::is_same_v<S, TorusShape>) {
                 const double ring = std::sqrt(p.x * p.x + p.z * p.z) - s.major;
                 return p.y * p.y + ring * ring <= s.minor * s.minor;
+            } else if constexpr (std::is_same_v<S, QuadricShape>) {  // POV-Ray's Inside_Quadric: <= 0, no tolerance
+                const Vector3 m = s.mixed;
+                return s.squares.x * p.x * p.x + s.squares.y * p.y * p.y + s.squares.z * p.z * p.z + m.x * p.x * p.y +
+                           m.y * p.x * p.z + m.z * p.y * p.z + glm::dot(s.linear, p) + s.constant <=
+                       0;
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

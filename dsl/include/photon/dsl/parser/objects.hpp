@@ -60,6 +60,10 @@ inline Object Parser::parse_object(const Token& kw) {
         parse_disc(obj);
     } else if (w == "torus") {
         parse_torus(obj);
+    } else if (w == "quadric") {
+        parse_quadric(obj);
+    } else if (w == "polygon") {
+        parse_polygon(obj);
     } else if (w == "triangle" || w == "smooth_triangle") {
         obj.shape = parse_triangle_corners(kw);
     } else if (w == "mesh") {

@@ -316,6 +316,10 @@ private:
     void parse_disc(Object& obj);
     void parse_torus(Object& obj);
 
+    // quadric_polygon.hpp
+    void parse_quadric(Object& obj);
+    void parse_polygon(Object& obj);
+
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
                  const std::string& message);

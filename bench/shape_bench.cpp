@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// Rays per second of one intersect() call per shape, against the sphere: the same 4096 rays
+// (from a sphere of radius 3 around the shape towards points within radius 1 of its centre, so
+// most hit), single-threaded, in float and double. `hit_fraction` says how many of them hit.
+//
+//   build/bench/shape_bench --benchmark_min_time=0.5
+
+#include <benchmark/benchmark.h>
+
+#include <photon/geometry/cylinder.hpp>
+#include <photon/geometry/polygon.hpp>
+#include <photon/geometry/quadric.hpp>
+#include <photon/geometry/sphere.hpp>
+#include <photon/geometry/triangle.hpp>
+#include <photon/math/rng.hpp>
+#include <photon/math/sampling.hpp>
+#include <photon/scene/scene.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using namespace photon;
+
+template <class S> const std::vector<Ray<S>>& rays() {
+    static const std::vector<Ray<S>> all = [] {
+        Pcg32 rng(42, 0);
+        std::vector<Ray<S>> r;
+        for (int i = 0; i < 4096; ++i) {
+            const Vec3<S> from = S(3) * uniform_sphere(rng.uniform2<S>());
+            const Vec3<S> to = uniform_sphere(rng.uniform2<S>()) * rng.uniform<S>();
+            r.push_back({from, glm::normalize(to - from)});
+        }
+        return r;
+    }();
+    return all;
+}
+
+template <class S> QuadricCoefficients<S> coefficients(Vec3<S> squares, S constant) {
+    return {squares, Vec3<S>(S(0)), Vec3<S>(S(0)), constant};
+}
+
+template <class Shape> void run(benchmark::State& state, const Shape& shape) {
+    using S = scalar_of<Shape>;
+    const auto& all = rays<S>();
+    std::size_t i = 0, hits = 0, tests = 0;
+    for (auto _ : state) {
+        const auto h = shape.intersect(all[i]);
+        benchmark::DoNotOptimize(h);
+        hits += h.has_value();
+        ++tests;
+        i = (i + 1) & (all.size() - 1);
+    }
+    state.SetItemsProcessed(std::int64_t(tests));
+    state.counters["hit_fraction"] = double(hits) / double(std::max<std::size_t>(tests, 1));
+}
+
+template <class S> void sphere(benchmark::State& s) { run(s, Sphere<S>(Vec3<S>(S(0)), S(1))); }
+template <class S> void quadric_sphere(benchmark::State& s) { run(s, Quadric<S>(coefficients<S>(Vec3<S>(S(1)), S(-1)))); }
+template <class S> void quadric_ellipsoid(benchmark::State& s) {
+    const auto map = Affine<S>::scale({1, S(0.5), S(0.7)}).then(Affine<S>::rotate_xyz({30, 45, 60}));
+    run(s, Quadric<S>(coefficients<S>(Vec3<S>(S(1)), S(-1))).transformed(map));
+}
+template <class S> void quadric_cylinder(benchmark::State& s) {  // shapes.inc's Cylinder_Y, unbounded
+    run(s, Quadric<S>(coefficients<S>({1, 0, 1}, S(-1))));
+}
+template <class S> void quadric_cone(benchmark::State& s) {  // QCone_Y, unbounded
+    run(s, Quadric<S>(coefficients<S>({1, -1, 1}, S(0))));
+}
+template <class S> void cylinder(benchmark::State& s) { run(s, Cylinder<S>({0, -1, 0}, {0, 1, 0}, S(1))); }
+template <class S> void csg_quadric_cylinder(benchmark::State& s) {  // Cylinder_Y cut by a box: the same solid
+    using Tree = DefaultCsg<S>;
+    run(s, Tree::intersection({Tree(Quadric<S>(coefficients<S>({1, 0, 1}, S(-1)))), Tree(Box<S>({-2, -1, -2}, {2, 1, 2}))}));
+}
+template <class S> void triangle(benchmark::State& s) { run(s, Triangle<S>({-1, -1, 0}, {1, -1, 0}, {0, 1, 0})); }
+template <class S> void polygon_square(benchmark::State& s) {
+    run(s, Polygon<S>({{{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}}));
+}
+template <class S> void polygon_star(benchmark::State& s) {  // one loop of 5 crossing edges
+    std::vector<Vec3<S>> loop;
+    for (int k = 0; k < 5; ++k) {
+        const double a = (90.0 + 144.0 * k) * pi<double> / 180.0;
+        loop.push_back(Vec3<S>(S(std::cos(a)), S(std::sin(a)), S(0)));
+    }
+    run(s, Polygon<S>({loop}));
+}
+
+}  // namespace
+
+#define PHOTON_SHAPE_BENCH(f) BENCHMARK_TEMPLATE(f, float); BENCHMARK_TEMPLATE(f, double)
+PHOTON_SHAPE_BENCH(sphere);
+PHOTON_SHAPE_BENCH(quadric_sphere);
+PHOTON_SHAPE_BENCH(quadric_ellipsoid);
+PHOTON_SHAPE_BENCH(quadric_cylinder);
+PHOTON_SHAPE_BENCH(quadric_cone);
+PHOTON_SHAPE_BENCH(cylinder);
+PHOTON_SHAPE_BENCH(csg_quadric_cylinder);
+PHOTON_SHAPE_BENCH(triangle);
+PHOTON_SHAPE_BENCH(polygon_square);
+PHOTON_SHAPE_BENCH(polygon_star);
+
+BENCHMARK_MAIN();
