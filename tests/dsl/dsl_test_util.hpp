@@ -3,11 +3,14 @@
 // Helpers for the scene-language tests: parse text while collecting warnings, catch the located
 // error of bad input, and write scratch files for #include tests.
 
+#include <catch2/catch.hpp>
+
 #include <photon/dsl/dsl.hpp>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -92,5 +95,40 @@ private:
 inline const char* const stage =
     "camera { location <0, 0, -5> look_at 0 }\n"
     "light_source { <0, 5, 0>, rgb 1 fade_distance 1 fade_power 2 }\n";
+
+/// A scene built from `stage` followed by `text`, in double, with the warnings of both steps.
+struct StagedScene {
+    dsl::SceneDescription desc;
+    std::vector<dsl::Diagnostic> warnings;
+    photon::DefaultScene<double> scene;
+};
+inline StagedScene build_staged(const std::string& text, const dsl::ParseOptions& options = {}) {
+    StagedScene b;
+    dsl::ParseOptions po = options;
+    po.diagnostics = collect(b.warnings);
+    b.desc = dsl::parse_string(std::string(stage) + text, "test.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(b.warnings);
+    b.scene = std::move(dsl::build<double>(b.desc, bo).scene);
+    return b;
+}
+
+/// The one object of a scene of one shape.
+template <class Shape> const Shape& only(const StagedScene& b) {
+    REQUIRE(b.scene.objects().size() == 1);
+    const auto* s = std::get_if<Shape>(&b.scene.objects()[0].shape);
+    REQUIRE(s != nullptr);
+    return *s;
+}
+
+/// The first hit of the ray from `from` along `dir`, if any.
+inline std::optional<photon::Hit<double>> shoot(const StagedScene& b, photon::Vec3<double> from,
+                                                photon::Vec3<double> dir) {
+    photon::Ray<double> r;
+    r.origin = from;
+    r.direction = dir;
+    const auto hit = b.scene.intersect(r);
+    return hit ? std::optional<photon::Hit<double>>(hit->hit) : std::nullopt;
+}
 
 }  // namespace dsl_test

@@ -15,44 +15,9 @@ using namespace dsl_test;
 using namespace photon;
 using Catch::Matchers::Contains;
 
-namespace {
-
-struct ShapeScene {
-    dsl::SceneDescription desc;
-    std::vector<dsl::Diagnostic> warnings;
-    DefaultScene<double> scene;
-};
-ShapeScene build_shape(const std::string& text, const dsl::ParseOptions& options = {}) {
-    ShapeScene b;
-    dsl::ParseOptions po = options;
-    po.diagnostics = collect(b.warnings);
-    b.desc = dsl::parse_string(std::string(stage) + text, "test.pov", po);
-    dsl::BuildOptions bo;
-    bo.diagnostics = collect(b.warnings);
-    b.scene = std::move(dsl::build<double>(b.desc, bo).scene);
-    return b;
-}
-
-template <class Shape> const Shape& only(const ShapeScene& b) {
-    REQUIRE(b.scene.objects().size() == 1);
-    const auto* s = std::get_if<Shape>(&b.scene.objects()[0].shape);
-    REQUIRE(s != nullptr);
-    return *s;
-}
-
-std::optional<Hit<double>> shoot(const ShapeScene& b, Vec3<double> from, Vec3<double> dir) {
-    Ray<double> r;
-    r.origin = from;
-    r.direction = dir;
-    const auto hit = b.scene.intersect(r);
-    return hit ? std::optional<Hit<double>>(hit->hit) : std::nullopt;
-}
-
-}  // namespace
-
 TEST_CASE("quadric: POV-Ray's coefficients, placed by the transformation, in CSG", "[dsl][quadric]") {
     // shapes.inc's Cylinder_X, scaled and moved: radius 0.5 around the line y = 1, z = 0.
-    const ShapeScene b = build_shape("quadric { <0, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 scale 0.5 translate y }\n");
+    const StagedScene b = build_staged("quadric { <0, 1, 1>, <0, 0, 0>, <0, 0, 0>, -1 scale 0.5 translate y }\n");
     const auto& q = only<Quadric<double>>(b);
     CHECK(std::isinf(q.bounds().max.x));
     CHECK(q.bounds().max.y == Approx(1.5).epsilon(1e-8));
@@ -61,23 +26,23 @@ TEST_CASE("quadric: POV-Ray's coefficients, placed by the transformation, in CSG
     CHECK(h->t == Approx(4.5));
     CHECK(h->normal.z == Approx(-1));
     // Mixed and linear terms: x^2 + y^2 + z^2 + xy - 1 (an ellipsoid), and (x - 1)^2 + y^2 + z^2 - 1 written out.
-    CHECK(only<Quadric<double>>(build_shape("quadric { <1, 1, 1>, <1, 0, 0>, 0, -1 }\n")).bounds().is_finite());
-    const ShapeScene moved = build_shape("quadric { <1, 1, 1>, <0, 0, 0>, <-2, 0, 0>, 0 }\n");
+    CHECK(only<Quadric<double>>(build_staged("quadric { <1, 1, 1>, <1, 0, 0>, 0, -1 }\n")).bounds().is_finite());
+    const StagedScene moved = build_staged("quadric { <1, 1, 1>, <0, 0, 0>, <-2, 0, 0>, 0 }\n");
     h = shoot(moved, {5, 0, 0}, {-1, 0, 0});
     REQUIRE(h);
     CHECK(h->t == Approx(3));
     // No quadratic term: the half-space G x + H y + I z + J <= 0, built as a plane.
-    const ShapeScene half = build_shape("quadric { 0, 0, <0, 2, 0>, -1 }\n");
+    const StagedScene half = build_staged("quadric { 0, 0, <0, 2, 0>, -1 }\n");
     const auto& plane = only<Plane<double>>(half);
     CHECK(plane.normal().y == Approx(1));
     CHECK(plane.offset() == Approx(0.5));
     // An infinite cylinder cut by a box: one CSG object, bounded.
-    const ShapeScene cut = build_shape("intersection { quadric { <1, 0, 1>, 0, 0, -1 } box { -2, 2 } }\n");
+    const StagedScene cut = build_staged("intersection { quadric { <1, 0, 1>, 0, 0, -1 } box { -2, 2 } }\n");
     REQUIRE(cut.scene.objects().size() == 1);
     CHECK(cut.scene.object_bounds(0).is_finite());
     CHECK_THAT(all_messages(cut.warnings), !Contains("skipped") && !Contains("quadric"));
     // `inverse` on its own: the outside of the cylinder (a CSG of one leaf).
-    const ShapeScene inverted = build_shape("quadric { <1, 0, 1>, 0, 0, -1 inverse }\n");
+    const StagedScene inverted = build_staged("quadric { <1, 0, 1>, 0, 0, -1 inverse }\n");
     h = shoot(inverted, {0, 0, 0}, {1, 0, 0});
     REQUIRE(h);
     CHECK(h->normal.x == Approx(-1));
@@ -92,7 +57,7 @@ TEST_CASE("quadric and polygon: located errors, and warnings where POV-Ray draws
     CHECK_THAT(error_of("polygon { 3, <0, 0>, <1, 0>, <1, 1> blah }"), Contains("1:37: expected an object modifier"));
     CHECK_THAT(error_of("polygon { 1e12, <0, 0>, <1, 0>, <1, 1> }"), Contains("1:11: the polygon has too many points"));
 
-    const ShapeScene b = build_shape("quadric { 0, 0, 0, 1 }\n"
+    const StagedScene b = build_staged("quadric { 0, 0, 0, 1 }\n"
                                "polygon { 3, <0, 0>, <1, 1>, <2, 2> }\n"
                                "polygon { 4, <0, 0, 0>, <1, 0, 0>, <1, 1, 0>, <0, 1, 1> }\n");
     CHECK(b.scene.objects().empty());
@@ -104,7 +69,7 @@ TEST_CASE("quadric and polygon: located errors, and warnings where POV-Ray draws
 
 TEST_CASE("polygon: loops closed by their first point, 2D and 3D points, transformed", "[dsl][polygon]") {
     // POV-Ray's objects/polygon.pov style: an outer square and an inner one, each closed.
-    const ShapeScene b = build_shape("polygon { 10, <-2, -2>, <2, -2>, <2, 2>, <-2, 2>, <-2, -2>,"
+    const StagedScene b = build_staged("polygon { 10, <-2, -2>, <2, -2>, <2, 2>, <-2, 2>, <-2, -2>,"
                                " <-1, -1>, <1, -1>, <1, 1>, <-1, 1>, <-1, -1> rotate -90*x translate y }\n");
     const auto& p = only<Polygon<double>>(b);
     CHECK(std::abs(p.normal().y) == Approx(1));
@@ -115,11 +80,11 @@ TEST_CASE("polygon: loops closed by their first point, 2D and 3D points, transfo
     REQUIRE(h);
     CHECK(h->t == Approx(4));
     // The last loop left open is closed, as POV-Ray closes it.
-    const ShapeScene open = build_shape("polygon { 3, <0, 0, 1>, <1, 0, 1>, <0, 1, 1> }\n");
+    const StagedScene open = build_staged("polygon { 3, <0, 0, 1>, <1, 0, 1>, <0, 1, 1> }\n");
     CHECK(shoot(open, {0.2, 0.2, 5}, {0, 0, -1}));
     CHECK(dsl::polygon_loops({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 0}, {5, 5, 0}, {6, 5, 0}, {5, 6, 0}}).size() == 2);
     // A polygon has no inside: `inverse` says so, and it is not a CSG child that decides.
-    const ShapeScene inv = build_shape("polygon { 3, 0, x, y inverse }\n");
+    const StagedScene inv = build_staged("polygon { 3, 0, x, y inverse }\n");
     CHECK_THAT(all_messages(inv.warnings), Contains("`inverse` on a `polygon` is ignored: it has no inside"));
 }
 
@@ -157,7 +122,7 @@ TEST_CASE("shapes.inc's quadrics read and build with no warning", "[dsl][quadric
         WARN("POV-Ray's includes are not installed: not tested");
         return;
     }
-    const ShapeScene b = build_shape("#include \"shapes.inc\"\n"
+    const StagedScene b = build_staged("#include \"shapes.inc\"\n"
                                "intersection { object { Cylinder_X } object { QCone_Y } box { -2, 2 } }\n"
                                "object { Paraboloid_Y scale 0.5 clipped_by { box { -1, 1 } } }\n"
                                "intersection { object { Hyperboloid_Y } sphere { 0, 3 } }\n",

@@ -18,45 +18,13 @@ using Catch::Matchers::Contains;
 
 namespace {
 
-struct QuadricScene {
-    dsl::SceneDescription desc;
-    std::vector<dsl::Diagnostic> warnings;
-    DefaultScene<double> scene;
-};
-QuadricScene build_quadric(const std::string& text) {
-    QuadricScene b;
-    dsl::ParseOptions po;
-    po.diagnostics = collect(b.warnings);
-    b.desc = dsl::parse_string(std::string(stage) + text, "test.pov", po);
-    dsl::BuildOptions bo;
-    bo.diagnostics = collect(b.warnings);
-    b.scene = std::move(dsl::build<double>(b.desc, bo).scene);
-    return b;
-}
-
-/// The one object of a scene of one shape.
-template <class Shape> const Shape& only(const QuadricScene& b) {
-    REQUIRE(b.scene.objects().size() == 1);
-    const auto* s = std::get_if<Shape>(&b.scene.objects()[0].shape);
-    REQUIRE(s != nullptr);
-    return *s;
-}
-
 bool near_point(const Vec3<double>& a, const Vec3<double>& b, double eps = 1e-9) { return glm::length(a - b) <= eps; }
-
-std::optional<Hit<double>> shoot(const QuadricScene& b, Vec3<double> from, Vec3<double> dir) {
-    Ray<double> r;
-    r.origin = from;
-    r.direction = dir;
-    const auto hit = b.scene.intersect(r);
-    return hit ? std::optional<Hit<double>>(hit->hit) : std::nullopt;
-}
 
 }  // namespace
 
 TEST_CASE("the round shapes are built as the library's shapes, placed by their transforms", "[dsl][quadrics]") {
     SECTION("cylinder: moved, rotated and uniformly scaled it stays a Cylinder") {
-        const QuadricScene b = build_quadric("cylinder { <0, 0, 0>, <0, 2, 0>, 0.5 open scale 2 rotate 90*z translate x }\n");
+        const StagedScene b = build_staged("cylinder { <0, 0, 0>, <0, 2, 0>, 0.5 open scale 2 rotate 90*z translate x }\n");
         CHECK(places(b.warnings, "skipped object").empty());
         const auto& c = only<Cylinder<double>>(b);
         CHECK(c.radius() == Approx(1));
@@ -66,7 +34,7 @@ TEST_CASE("the round shapes are built as the library's shapes, placed by their t
         CHECK(near_point(c.cap(), {-3, 0, 0}, 1e-9));
     }
     SECTION("a non-uniform scale makes a cylinder a Transformed cone with equal radii, an ellipse in section") {
-        const QuadricScene b = build_quadric("cylinder { -y, y, 1 scale <2, 1, 1> }\n");
+        const StagedScene b = build_staged("cylinder { -y, y, 1 scale <2, 1, 1> }\n");
         const auto& t = only<Transformed<TruncatedCone<double>>>(b);
         CHECK(t.shape().base_radius() == t.shape().cap_radius());
         const auto hit = shoot(b, {-5, 0, 0}, {1, 0, 0});
@@ -78,26 +46,26 @@ TEST_CASE("the round shapes are built as the library's shapes, placed by their t
         CHECK(shoot(b, {1.5, 5, 0}, {0, -1, 0})->point.y == Approx(1));
     }
     SECTION("cone: radii kept, a pointed one, and equal radii read as a cylinder (POV-Ray's rule)") {
-        const QuadricScene pointed = build_quadric("cone { 0, 1, 2*y, 0 translate z }\n");
+        const StagedScene pointed = build_staged("cone { 0, 1, 2*y, 0 translate z }\n");
         const auto& k = only<TruncatedCone<double>>(pointed);
         CHECK(k.base_radius() == 1);
         CHECK(k.cap_radius() == 0);
         CHECK(near_point(k.base(), {0, 0, 1}));
-        CHECK(only<Cylinder<double>>(build_quadric("cone { 0, 0.5, y, 0.5 }\n")).radius() == 0.5);
-        CHECK(only<Cylinder<double>>(build_quadric("cone { 0, 0.5, y, 0.5 + 1e-12 }\n")).radius() == 0.5);
-        const QuadricScene open = build_quadric("cone { 0, 1, y, 0.5 open }\n");
+        CHECK(only<Cylinder<double>>(build_staged("cone { 0, 0.5, y, 0.5 }\n")).radius() == 0.5);
+        CHECK(only<Cylinder<double>>(build_staged("cone { 0, 0.5, y, 0.5 + 1e-12 }\n")).radius() == 0.5);
+        const StagedScene open = build_staged("cone { 0, 1, y, 0.5 open }\n");
         CHECK(only<TruncatedCone<double>>(open).open());
         // Open: a ray down the axis passes through.
         CHECK_FALSE(shoot(open, {0, 5, 0}, {0, -1, 0}).has_value());
     }
     SECTION("disc: its hole, its normal turned with it, and a squashed disc Transformed") {
-        const QuadricScene ring = build_quadric("disc { <0, 1, 0>, <0, 0, -3>, 2, 1 rotate 90*x }\n");
+        const StagedScene ring = build_staged("disc { <0, 1, 0>, <0, 0, -3>, 2, 1 rotate 90*x }\n");
         const auto& d = only<Disc<double>>(ring);
         CHECK(d.radius() == 2);
         CHECK(d.hole_radius() == 1);
         CHECK(near_point(d.normal(), {0, 1, 0}, 1e-12));
         CHECK(near_point(d.center(), {0, 0, 1}, 1e-12));
-        const QuadricScene squashed = build_quadric("disc { 0, y, 1, 0.5 scale <3, 1, 1> }\n");
+        const StagedScene squashed = build_staged("disc { 0, y, 1, 0.5 scale <3, 1, 1> }\n");
         (void)only<Transformed<Disc<double>>>(squashed);
         CHECK(shoot(squashed, {2.5, 1, 0}, {0, -1, 0}).has_value());  // inside the ellipse
         CHECK_FALSE(shoot(squashed, {1.2, 1, 0}, {0, -1, 0}).has_value());  // in the hole
@@ -105,7 +73,7 @@ TEST_CASE("the round shapes are built as the library's shapes, placed by their t
         CHECK(shoot(squashed, {0, 1, 0.9}, {0, -1, 0}).has_value());         // the ring along z is not widened
     }
     SECTION("torus: around y at the origin, placed by its transform; major radius 0 is a sphere") {
-        const QuadricScene b = build_quadric("torus { 2, 0.5 sturm rotate 90*x translate <0, 0, 5> }\n");
+        const StagedScene b = build_staged("torus { 2, 0.5 sturm rotate 90*x translate <0, 0, 5> }\n");
         const auto& t = only<Transformed<Torus<double>>>(b);
         CHECK(t.shape().major_radius() == 2);
         CHECK(t.shape().minor_radius() == 0.5);
@@ -114,7 +82,7 @@ TEST_CASE("the round shapes are built as the library's shapes, placed by their t
         CHECK(hit->point.y == Approx(2.5));
         CHECK(near_point(hit->normal, {0, 1, 0}, 1e-9));
         CHECK_FALSE(shoot(b, {0, 0, 0}, {0, 0, 1}).has_value());  // through the hole
-        CHECK(only<Sphere<double>>(build_quadric("torus { 0, 0.5 translate x }\n")).radius() == 0.5);
+        CHECK(only<Sphere<double>>(build_staged("torus { 0, 0.5 translate x }\n")).radius() == 0.5);
     }
 }
 
@@ -130,7 +98,7 @@ TEST_CASE("bad values of the round shapes: located errors, and warnings where PO
     CHECK_THAT(error_of("cylinder { 0, y, 1 pigment { rgb 1 } blah }"), Contains("1:38: expected an object modifier"));
     CHECK_THAT(error_of("cylinder { 0, y, 1 pigment { rgb 1 } open }"), Contains("1:38: expected an object modifier"));
 
-    const QuadricScene b = build_quadric("cylinder { 0, y, 0 }\n"
+    const StagedScene b = build_staged("cylinder { 0, y, 0 }\n"
                                "cone { 0, 0, y, 0 }\n"
                                "disc { 0, 0, 1 }\n"
                                "disc { 0, y, 1, 1 }\n"
@@ -153,12 +121,12 @@ TEST_CASE("bad values of the round shapes: located errors, and warnings where PO
     CHECK_THAT(all_messages(b.warnings), Contains("`Post` is a `cylinder` (declared at 8:10): skipped, it has no surface"));
 
     // Negative radii that POV-Ray squares or mirrors: read as their absolute values, with a warning.
-    const QuadricScene negative = build_quadric("cylinder { 0, y, -0.5 }\n");
+    const StagedScene negative = build_staged("cylinder { 0, y, -0.5 }\n");
     CHECK(only<Cylinder<double>>(negative).radius() == 0.5);
     CHECK_THAT(all_messages(negative.warnings),
                Contains("the radius of the cylinder is negative (-0.5): read as 0.5, as POV-Ray does"));
-    CHECK(only<Disc<double>>(build_quadric("disc { 0, y, -2, -1 }\n")).hole_radius() == 1);
-    CHECK(only<Transformed<Torus<double>>>(build_quadric("torus { -2, 0.5 }\n")).shape().major_radius() == 2);
+    CHECK(only<Disc<double>>(build_staged("disc { 0, y, -2, -1 }\n")).hole_radius() == 1);
+    CHECK(only<Transformed<Torus<double>>>(build_staged("torus { -2, 0.5 }\n")).shape().major_radius() == 2);
 }
 
 TEST_CASE("export-pov writes the round shapes back: they read again as the same scene", "[dsl][quadrics][export]") {
