@@ -324,6 +324,52 @@ TEST_CASE("a glass ball behind a wall behind the camera gets no caustic photons 
     }
 }
 
+TEST_CASE("a glass ball behind the camera, with no wall, gets no caustic photons: the global photons carry its caustics",
+          "[plan]") {
+    // The camera looks along +z from the origin; ball 1 is in view, ball 2 behind the camera, and
+    // the light behind ball 2: its caustics land near it, out of view. No wall proves that: the
+    // caustic pilot measures it, and the global pass still carries ball 3's caustics.
+    const auto scene = floor_scene([](auto& sc, auto) {
+        const auto glass = sc.add_material(Material<float>::glass(1.5f));
+        sc.add(Sphere<float>({0, 0.6f, 3}, 0.5f), glass);
+        sc.add(Sphere<float>({0, 0.6f, -3}, 0.5f), glass);
+        sc.add_light(PointLight<float>{.position = {0, 3, -5}, .power = Rgb<float>(100.0f)});
+    });
+    const auto cam = camera_at({0, 1, 0}, {0, 0.5f, 3});
+    const RenderSettings s = small();
+    const EffectsPlan p = plan_effects(scene, cam, s);
+    REQUIRE(p.caustic_pilot.size() == 2);
+    INFO("seen: ball 1 " << p.caustic_pilot[0].seen << " W, ball 2 " << p.caustic_pilot[1].seen << " W (landed "
+                         << p.caustic_pilot[1].landed << " W)");
+    CHECK(p.caustic_pilot[0].seen > 0.0);
+    CHECK(p.caustic_pilot[1].landed > 0.0);
+    CHECK(p.caustic_pilot[1].seen < 0.01 * p.caustic_pilot[0].seen);
+    CHECK(p.caustic_pass);
+    CHECK_FALSE(p.hidden_caustic_objects[1]);
+    CHECK(p.hidden_caustic_objects[2]);
+    CHECK(mentions(p.dropped, "caustic photons at object 2 (sphere): the pilot saw under 1%"));
+    CHECK(p.caustic_objects == std::vector<std::uint32_t>{1, 2});  // both still make caustics
+    // Every caustic photon goes to ball 1: its cone is the only one.
+    const auto aim = caustic_aim(scene, p.hidden_caustic_objects);
+    REQUIRE(aim.cones.size() == 2);
+    CHECK(aim.cones[0].size() + aim.cones[1].size() == 2);
+    CHECK(caustic_aim(scene).cones[0].size() + caustic_aim(scene).cones[1].size() == 4);
+    CHECK(p.global_collects_caustics);
+
+    const RenderResult planned = render(scene, cam, s);
+    RenderSettings on = s;
+    on.effects.caustics = EffectSwitch::on;  // no pilot: both balls aimed at
+    const RenderResult forced = render(scene, cam, on);
+    const EffectsPlan forced_plan = plan_effects(scene, cam, on);
+    CHECK(forced_plan.caustic_pilot.empty());
+    CHECK_FALSE(forced_plan.hidden_caustic_objects[2]);
+    CHECK(planned.stats.caustic.emitted == s.caustic_photons);
+    CHECK(planned.stats.caustic.from_global > 0);  // ball 2's caustics, from the global pass
+    CHECK(forced.stats.caustic.from_global == 0);
+    // The same image within noise: the mean over the image moves by well under 1% between seeds.
+    CHECK(planned.film.mean().y == Approx(forced.film.mean().y).epsilon(0.02));
+}
+
 TEST_CASE("a forced-on effect equals the unplanned render: forced off, it is gone", "[plan]") {
     const auto scene = diffuse_room(true);
     const RenderSettings s = small();

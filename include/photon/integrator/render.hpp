@@ -92,8 +92,8 @@ template <class SceneT>
 /// a map the scene cannot show is not built, a light hidden from the image shoots no photons).
 /// `rt` needs none. Caustics come from two maps: the caustic pass's photons (aimed at the
 /// caustic targets), and the global pass's L S+ D photons from every direction the caustic pass
-/// does not aim into, kept apart because they are as sparse as the global map's and are read
-/// with its estimate settings (unaimed_specular_objects() lists the mirrors and glass only they
+/// does not aim into, with the caustic pass's photons aimed at infinite mirror planes, kept
+/// apart because they are spread like the global map's and are read with its estimate settings (unaimed_specular_objects() lists the mirrors and glass only they
 /// serve, with a warning).
 template <class SceneT>
 [[nodiscard]] PhotonMaps build_photon_maps(const SceneT& scene, const EffectsPlan& plan, const RenderSettings& settings,
@@ -128,11 +128,13 @@ template <class SceneT>
     const bool caustics = plan.caustics.present && settings.effects.caustics != EffectSwitch::off;
     const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
     const bool caustic_pass = plan.caustic_pass;
-    std::vector<Photon> caustic_photons;
+    std::vector<Photon> caustic_photons, broad_caustics;  // broad: a mirror plane's
     if (caustic_pass) {
         TracedPhotons traced = trace_caustic_photons(scene, pass, aim);
         count(traced, stats.caustic);
         caustic_photons = std::move(traced.photons);
+        broad_caustics = std::move(traced.unaimed_caustics);
+        stats.caustic.from_mirror_planes = broad_caustics.size();
     }
     if (caustics)
         for (std::uint32_t id : unaimed_specular_objects(scene))
@@ -146,7 +148,8 @@ template <class SceneT>
         pass.collect_unaimed_caustics = plan.global_collects_caustics;
         TracedPhotons traced = trace_global_photons(scene, pass, caustic_pass ? aim : decltype(aim){});
         count(traced, stats.global);
-        if (!traced.unaimed_caustics.empty()) maps.unaimed_caustic.emplace(std::span<const Photon>(traced.unaimed_caustics));
+        stats.caustic.from_global = traced.unaimed_caustics.size();
+        broad_caustics.insert(broad_caustics.end(), traced.unaimed_caustics.begin(), traced.unaimed_caustics.end());
         settle(maps.global, traced.photons, stats.global);  // photons stay in trace order for the precomputation
         if (pass.keep_normals && !cancelled()) {
             derive_estimate_radii(maps, settings);  // the precomputation reads the global radius
@@ -157,8 +160,8 @@ template <class SceneT>
         }
     }
     if (!caustic_photons.empty()) settle(maps.caustic, caustic_photons, stats.caustic);
+    if (!broad_caustics.empty()) maps.unaimed_caustic.emplace(std::span<const Photon>(broad_caustics));
     if (maps.unaimed_caustic) {
-        stats.caustic.from_global = maps.unaimed_caustic->size();
         stats.caustic.stored += maps.unaimed_caustic->size();
         stats.caustic.memory_bytes += maps.unaimed_caustic->memory_bytes();
     }

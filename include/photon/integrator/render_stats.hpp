@@ -15,11 +15,15 @@ namespace photon {
 /// Rays traced in pass 2, by purpose.
 struct RayCounts {
     std::uint64_t camera = 0, shadow = 0, reflection = 0, refraction = 0, gather = 0, probe = 0;
+    /// Not rays: (shading point, area light) pairs given no shadow ray, since a wall lies across
+    /// every ray between them (separating_wall.hpp).
+    std::uint64_t walled_lights = 0;
 
     [[nodiscard]] std::uint64_t total() const noexcept { return camera + shadow + reflection + refraction + gather + probe; }
     RayCounts& operator+=(const RayCounts& o) noexcept {
         camera += o.camera, shadow += o.shadow, reflection += o.reflection;
         refraction += o.refraction, gather += o.gather, probe += o.probe;
+        walled_lights += o.walled_lights;
         return *this;
     }
 };
@@ -30,6 +34,9 @@ struct PhotonMapStats {
     /// Caustics: of the stored photons, the global pass's L S+ D photons from directions the
     /// caustic pass does not aim into (a map of their own, PhotonMaps::unaimed_caustic)
     std::uint64_t from_global = 0;
+    /// Caustics: of the stored photons, the caustic pass's aimed at infinite mirror planes, kept
+    /// with the global pass's in the same map (their light spreads like the global map's)
+    std::uint64_t from_mirror_planes = 0;
     std::uint64_t rays = 0;     ///< photon rays traced
     std::uint64_t memory_bytes = 0;
     double trace_seconds = 0, build_seconds = 0;
@@ -97,9 +104,9 @@ struct RenderStats {
     row("global map", "%llu emitted, %llu stored, %.1f MiB, trace %.2f s, build %.2f s",
         (unsigned long long)s.global.emitted, (unsigned long long)s.global.stored, mib(s.global.memory_bytes),
         s.global.trace_seconds, s.global.build_seconds);
-    row("caustic map", "%llu emitted, %llu stored (%llu from the global pass), %.1f MiB, trace %.2f s, build %.2f s",
+    row("caustic map", "%llu emitted, %llu stored (%llu from the global pass, %llu aimed at mirror planes), %.1f MiB, trace %.2f s, build %.2f s",
         (unsigned long long)s.caustic.emitted, (unsigned long long)s.caustic.stored,
-        (unsigned long long)s.caustic.from_global, mib(s.caustic.memory_bytes), s.caustic.trace_seconds,
+        (unsigned long long)s.caustic.from_global, (unsigned long long)s.caustic.from_mirror_planes, mib(s.caustic.memory_bytes), s.caustic.trace_seconds,
         s.caustic.build_seconds);
     if (s.global.radius > 0 || s.caustic.radius > 0) {
         auto radius = [](const PhotonMapStats& m) {
@@ -121,6 +128,9 @@ struct RenderStats {
         (unsigned long long)s.rays.camera, (unsigned long long)s.rays.shadow, (unsigned long long)s.rays.reflection);
     row("", "refraction %llu, gather %llu, probe %llu", (unsigned long long)s.rays.refraction,
         (unsigned long long)s.rays.gather, (unsigned long long)s.rays.probe);
+    if (s.rays.walled_lights > 0)
+        row("walled lights", "%llu times a wall lay across every shadow ray from a point to an area light: none traced",
+            (unsigned long long)s.rays.walled_lights);
     row("density estimates", "%llu", (unsigned long long)s.estimates);
     row("irradiance cache", "%llu records", (unsigned long long)s.cache_records);
     if (s.plan.photons_not_shot > 0 || s.plan.photons_moved > 0 || !s.plan.passes_skipped.empty()) {

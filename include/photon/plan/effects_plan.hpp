@@ -29,6 +29,7 @@
 #include "../tracing/light_allocation.hpp"
 #include "../tracing/photon_tracer.hpp"
 #include "shape_facts.hpp"
+#include "visible_caustics.hpp"
 #include "visible_power.hpp"
 
 namespace photon {
@@ -60,9 +61,12 @@ struct EffectsPlan {
     PathClassPlan specular_view;  ///< L (S|D)* S+ E: seen in mirrors and through glass
     std::vector<std::uint32_t> caustic_objects;  ///< the mirror and glass objects that carry caustics
     std::vector<std::string> caustic_object_names;  ///< "object 5 (sphere)", one per caustic_objects entry
-    /// Per object: a mirror or glass object whose caustics the camera cannot see (walled off),
-    /// at which the caustic pass does not aim (caustic_aim's `skip`).
+    /// Per object: a mirror or glass object at which the caustic pass does not aim (caustic_aim's
+    /// `skip`): its caustics cannot be seen (walled off), or the caustic pilot saw them land out of
+    /// view (then the global pass carries them).
     std::vector<bool> hidden_caustic_objects;
+    /// What the caustic pilot measured per aimed target (visible_caustics.hpp); empty: not run.
+    std::vector<TargetCausticsSeen> caustic_pilot;
 
     std::vector<LightPlan> lights;
     bool global_pass = false, caustic_pass = false;
@@ -123,11 +127,11 @@ template <class SceneT>
     const Vec3<double> axis(cone->axis()), origin(light_center(light));
     const double light_r = double(light_radius(light));
     const auto angle_to = [&](const Vec3<double>& d) { return std::acos(std::clamp(glm::dot(axis, d), -1.0, 1.0)); };
-    const BBox<S> b = scene.object_bounds(i);
-    if (b.is_finite()) {
-        const Vec3<double> to = Vec3<double>(b.center()) - origin;
+    const Ball<S> ball = scene.object_bounding_ball(i);
+    if (std::isfinite(ball.radius)) {
+        const Vec3<double> to = Vec3<double>(ball.center) - origin;
         const double d = glm::length(to);
-        const double reach = 0.5 * glm::length(Vec3<double>(b.extent())) + light_r;
+        const double reach = double(ball.radius) + light_r;
         if (!(d > reach)) return true;
         return angle_to(to / d) <= half + std::asin(reach / d) + margin;
     }
@@ -179,10 +183,13 @@ template <class SceneT>
 }  // namespace plan_detail
 
 /// The plan for `scene` seen by a camera at `eye` (nothing: unknown, the inferences that need
-/// the camera are not made) under `settings`.
+/// the camera are not made) under `settings`. The caustic targets in `unseen_caustics` (the
+/// caustic pilot's verdict, visible_caustics.hpp) are not aimed at; the global pass carries
+/// their caustics.
 template <class SceneT>
 [[nodiscard]] EffectsPlan plan_effects(const SceneT& scene, const std::optional<Vec3<typename SceneT::scalar_type>>& eye,
-                                       const RenderSettings& settings) {
+                                       const RenderSettings& settings,
+                                       const std::vector<std::uint32_t>& unseen_caustics = {}) {
     using S = typename SceneT::scalar_type;
     using plan_detail::object_name;
     EffectsPlan plan;
@@ -241,10 +248,10 @@ template <class SceneT>
     std::vector<std::uint32_t> seen_specular;
     std::vector<std::string> walled;
     for (std::uint32_t i : specular) {
-        const BBox<S> b = scene.object_bounds(i);
+        const Ball<S> ball = scene.object_bounding_ball(i);
         std::optional<std::string> why;
-        if (eye && b.is_finite() && force.caustics != EffectSwitch::on)
-            why = plan_detail::walled_off(scene, *eye, b.center(), S(0.5) * glm::length(b.extent()), i);
+        if (eye && std::isfinite(ball.radius) && force.caustics != EffectSwitch::on)
+            why = plan_detail::walled_off(scene, *eye, ball.center, ball.radius, i);
         if (!why) {
             seen_specular.push_back(i);
             continue;
@@ -252,6 +259,7 @@ template <class SceneT>
         plan.hidden_caustic_objects[i] = true;
         walled.push_back(object_name(scene, i) + ": " + *why);
     }
+    for (std::uint32_t i : unseen_caustics) plan.hidden_caustic_objects.at(i) = true;
     plan.caustics.present = lit && !seen_specular.empty() && !diffuse.empty();
     plan.caustics.reason = !lit                   ? no_light
                            : specular.empty()      ? "no mirror or glass surface"
@@ -310,8 +318,10 @@ template <class SceneT>
     plan.caustic_pass = want_caustics && settings.caustic_photons > 0 && !aim.empty() && any_emits && !diffuse.empty();
     if (settings.caustic_photons > 0 && !plan.caustic_pass) {
         const std::string why = !plan.caustics.present ? plan.caustics.reason
-                                : aim.empty()           ? "no caustic target with finite bounds to aim at"
-                                                        : no_light;
+                                : aim.empty() && !unseen_caustics.empty()
+                                    ? "the pilot saw no target's caustics land in view; the global photons carry them"
+                                : aim.empty() ? "no caustic target to aim at (each is unbounded and not a plane, or has no `target`)"
+                                              : no_light;
         drop("caustic photons", force.caustics == EffectSwitch::on ? "forced on, but " + why : why,
              force.caustics == EffectSwitch::off);
         plan.passes_skipped.push_back("caustic photons");
@@ -321,8 +331,14 @@ template <class SceneT>
     const bool collect = want_caustics && plan.caustics.present;
     bool unaimed = collect && !plan.caustic_pass;
     for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
-    if (settings.caustic_photons > 0)
+    unaimed = unaimed || (collect && !unseen_caustics.empty());
+    if (settings.caustic_photons > 0) {
         for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
+        for (std::uint32_t i : unseen_caustics)
+            plan.dropped.push_back("caustic photons at " + object_name(scene, i) +
+                                   ": the pilot saw under 1% of the caustic light land in view come from it; "
+                                   "the global photons carry its caustics");
+    }
     // Spotlights: the targets outside a light's cone get none of its caustic photons, and a
     // target outside every emitting light's cone gets none at all (its caustics need light that
     // reaches it first by way of a diffuse bounce: the global pass carries them).
@@ -398,6 +414,20 @@ template <class SceneT>
                                        const RenderSettings& settings) {
     using S = typename SceneT::scalar_type;
     EffectsPlan plan = plan_effects(scene, std::optional(camera.location()), settings);
+    // The caustic pilot: targets whose caustics land out of view are not aimed at. Only when the
+    // global pass runs and hands over the caustics the caustic pass does not aim at, since it
+    // then carries those targets' caustics.
+    if (plan.planned && plan.caustic_pass && plan.global_collects_caustics && settings.effects.caustics == EffectSwitch::automatic) {
+        std::vector<std::uint32_t> aimed;
+        for (std::uint32_t i = 0; i < scene.objects().size(); ++i)
+            if (is_aimable_target(scene, i) && !plan.hidden_caustic_objects[i]) aimed.push_back(i);
+        VisibleCausticsPilot pilot;
+        pilot.seed = settings.seed;
+        std::vector<TargetCausticsSeen> measured = visible_caustics(scene, camera, aimed, plan.light_emits(), pilot);
+        const std::vector<std::uint32_t> unseen = unseen_caustic_targets(measured, pilot.min_share);
+        if (!unseen.empty()) plan = plan_effects(scene, std::optional(camera.location()), settings, unseen);
+        plan.caustic_pilot = std::move(measured);
+    }
     const auto lights = scene.lights();
     const std::vector<bool> emits = plan.light_emits();
     if (!plan.planned || !plan.global_pass || std::count(emits.begin(), emits.end(), true) < 2 ||

@@ -80,6 +80,24 @@ namespace photon {
                       plan.pilot.photons_per_light, 100.0 * plan.pilot.floor, unseen, plan.lights.size());
         line("light shares", text);
     }
+    if (!plan.caustic_pilot.empty()) {
+        // Each target's part of the caustic light the pilot saw land in view (at most four named).
+        double total = 0.0;
+        for (const auto& m : plan.caustic_pilot) total += m.seen;
+        std::string parts;
+        for (std::size_t k = 0; k < plan.caustic_pilot.size() && k < 4; ++k) {
+            const auto& m = plan.caustic_pilot[k];
+            std::string name = "object " + std::to_string(m.object);
+            for (std::size_t i = 0; i < plan.caustic_objects.size(); ++i)
+                if (plan.caustic_objects[i] == m.object && i < names.size()) name = names[i];
+            char share[32];
+            std::snprintf(share, sizeof share, " %.1f%%", total > 0.0 ? 100.0 * m.seen / total : 0.0);
+            parts += (k ? ", " : "") + name + share;
+        }
+        if (plan.caustic_pilot.size() > 4) parts += " and " + std::to_string(plan.caustic_pilot.size() - 4) + " more";
+        line("caustic aim", "a pilot of " + std::to_string(plan.caustic_pilot[0].photons) +
+                                " photons per target; of the caustic light landing in view: " + parts);
+    }
     std::string passes;
     auto pass = [&](bool runs, const char* name) {
         if (runs) passes += (passes.empty() ? "" : ", ") + std::string(name);

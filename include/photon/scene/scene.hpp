@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "../geometry/bounding_ball.hpp"
 #include "../geometry/box.hpp"
 #include "../geometry/bvh.hpp"
 #include "../geometry/cone.hpp"
@@ -131,6 +132,11 @@ public:
     }
     [[nodiscard]] BBox<S> object_bounds(std::uint32_t object) const {
         return std::visit([](const auto& shape) { return shape.bounds(); }, objects_[object].shape);
+    }
+    /// A ball holding the object (bounding_ball.hpp: tight for round shapes); radius infinity
+    /// for an unbounded one.
+    [[nodiscard]] Ball<S> object_bounding_ball(std::uint32_t object) const {
+        return std::visit([](const auto& shape) { return bounding_ball(shape); }, objects_[object].shape);
     }
     /// Bounds of all bounded objects (infinite planes excluded).
     [[nodiscard]] BBox<S> bounds() const noexcept { return bvh_.bounds(); }

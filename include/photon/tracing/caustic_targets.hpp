@@ -8,9 +8,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <variant>
 #include <vector>
 
 #include "../geometry/bbox.hpp"
+#include "../geometry/bounding_ball.hpp"
+#include "../geometry/plane.hpp"
 #include "../light/light.hpp"
 #include "../math/frame.hpp"
 #include "../math/sampling.hpp"
@@ -23,34 +27,86 @@ template <Scalar S> struct TargetCone {
     S one_minus_cos;  ///< 1 - cos of the half-angle; 2: the whole sphere of directions
     S solid_angle;
     Frame<S> frame;
+    /// Around an infinite mirror plane's image of the scene: its photons spread over whole floors
+    /// and walls like the global map's, and are read like them (TracedPhotons::unaimed_caustics).
+    bool broad = false;
 
     [[nodiscard]] bool contains(const Vec3<S>& d) const noexcept { return one_minus_cos_between(d, axis) <= one_minus_cos; }
 };
 
-/// Cones from `light` to targets bounded by spheres (centre, radius). The cone is widened by the
-/// light's own radius so that it covers rays leaving any point of a sphere light.
+/// What caustic photons are aimed at: a ball holding a mirror or glass object, or, for an infinite
+/// mirror plane (`mirror`), the ball of the scene's bounded objects seen in that mirror. Light a
+/// plane reflects into a ball leaves the light in the mirror image of the directions from the
+/// light's own mirror image to the ball: one cone again, with no bound on the plane needed. What
+/// the plane reflects past the ball (onto another infinite plane far away) is left to the global
+/// pass, which hands the caustic map every L S+ D photon the cones do not cover.
+template <Scalar S> struct AimTarget {
+    Ball<S> ball;
+    BBox<S> box;  ///< also holds the target (the corners' cone is narrower for a flat one)
+    std::optional<Plane<S>> mirror;
+};
+
+namespace detail {
+/// 1 - cos of the half-angle of the narrowest cone from `origin` (widened by `widen`, a sphere
+/// around it) about `axis` holding the box, or 2 (every direction) when no cone of at most
+/// 90 degrees does: a wider cone is not convex, so holding the corners would not prove holding
+/// the box.
 template <Scalar S>
-[[nodiscard]] std::vector<TargetCone<S>> target_cones(const Light<S>& light,
-                                                      const std::vector<std::pair<Vec3<S>, S>>& targets) {
+[[nodiscard]] S box_cone_1mc(const Vec3<S>& origin, S widen, const Vec3<S>& axis, const BBox<S>& box) noexcept {
+    if (!box.is_finite()) return S(2);
+    const Vec3<S> nearest = glm::clamp(origin, box.min, box.max);
+    const S distance = glm::length(nearest - origin);
+    if (!(distance > widen)) return S(2);
+    double widest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3<double> c((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                             (corner & 4) ? box.max.z : box.min.z);
+        const Vec3<double> v = c - Vec3<double>(origin);
+        const double length = glm::length(v);
+        if (!(length > 0.0)) return S(2);
+        widest = std::max(widest, std::acos(std::clamp(glm::dot(Vec3<double>(axis), v) / length, -1.0, 1.0)));
+    }
+    widest += std::asin(std::min(1.0, double(widen) / double(distance))) + 1e-6;  // 1e-6 rad for rounding
+    if (!(widest < pi<double> / 2)) return S(2);
+    return S(2.0 * squared(std::sin(0.5 * widest)));
+}
+}  // namespace detail
+
+/// Cones from `light` to each target: around the target's ball or its box's corners, whichever
+/// is narrower, widened by the light's own radius so that they cover rays leaving any point of a
+/// sphere light.
+template <Scalar S>
+[[nodiscard]] std::vector<TargetCone<S>> target_cones(const Light<S>& light, const std::vector<AimTarget<S>>& targets) {
     std::vector<TargetCone<S>> cones;
-    const Vec3<S> origin = light_center(light);
     const S light_r = light_radius(light);
-    for (const auto& [center, radius] : targets) {
-        const Vec3<S> to = center - origin;
+    for (const auto& target : targets) {
+        Vec3<S> origin = light_center(light);
+        if (target.mirror) origin -= S(2) * (glm::dot(origin, target.mirror->normal()) - target.mirror->offset()) * target.mirror->normal();
+        TargetCone<S> cone{.axis = {S(0), S(0), S(1)}, .one_minus_cos = S(2), .solid_angle = S(0), .frame = {}, .broad = false};
+        const Vec3<S> to = target.ball.center - origin;
         const S d = glm::length(to);
-        const S reach = radius + light_r;
-        TargetCone<S> cone;
-        if (!(d > reach)) {
-            cone.axis = {S(0), S(0), S(1)};
-            cone.one_minus_cos = S(2);
-        } else {
+        const S reach = target.ball.radius + light_r;
+        if (d > reach) {
             // 1 - cos = sin^2 / (1 + cos): a small target far away keeps its solid angle.
             cone.axis = to / d;
             const S sin2 = squared(reach / d);
             cone.one_minus_cos = sin2 / (S(1) + std::sqrt(std::max(S(0), S(1) - sin2)));
         }
+        const Vec3<S> to_box = target.box.center() - origin;
+        if (target.box.is_finite() && glm::length(to_box) > S(0)) {
+            const Vec3<S> box_axis = glm::normalize(to_box);
+            const S box_1mc = detail::box_cone_1mc(origin, light_r, box_axis, target.box);
+            if (box_1mc < cone.one_minus_cos) {
+                cone.axis = box_axis;
+                cone.one_minus_cos = box_1mc;
+            }
+        }
+        // Directions from the light's mirror image, mirrored back: those from the light itself.
+        if (target.mirror && cone.one_minus_cos < S(2))
+            cone.axis -= S(2) * glm::dot(cone.axis, target.mirror->normal()) * target.mirror->normal();
         cone.solid_angle = cone_solid_angle_1mc(cone.one_minus_cos);
         cone.frame = Frame<S>::from_normal(cone.axis);
+        cone.broad = target.mirror.has_value();
         cones.push_back(cone);
     }
     return cones;
@@ -61,6 +117,7 @@ template <Scalar S>
 template <Scalar S> struct ConeMixtureSample {
     Vec3<S> direction;
     S pdf;
+    bool broad = false;  ///< drawn from a mirror plane's cone (TargetCone::broad)
 };
 
 template <Scalar S>
@@ -80,14 +137,15 @@ template <Scalar S>
     unsigned covering = 0;
     for (const auto& cone : cones) covering += cone.contains(d) ? 1u : 0u;
     covering = std::max(covering, 1u);  // the chosen cone contains d up to rounding
-    return {d, S(covering) / total_solid_angle};
+    return {d, S(covering) / total_solid_angle, c.broad};
 }
 
 /// Where each light's caustic photons are aimed: the cones around the bounding spheres of the
 /// scene's caustic targets, per light. The caustic pass samples them; the global pass asks
 /// covers() which of its L S+ D photons the caustic pass could also have produced, and hands
 /// the others to the caustic map itself, so that no caustic path is lost (an infinite mirror
-/// plane cannot be aimed at, a mirror with `photons { }` but no `target` is not).
+/// unbounded shape other than a plane cannot be aimed at, a mirror with `photons { }` but no
+/// `target` is not).
 template <Scalar S> struct CausticAim {
     std::vector<std::vector<TargetCone<S>>> cones;  ///< per light; empty: no caustic pass
     std::vector<S> total_solid_angle;               ///< per light
@@ -113,9 +171,30 @@ template <Scalar S> struct CausticAim {
     }
 };
 
-/// Whether caustic photons can be aimed at object `i`: a caustic target with finite bounds.
+/// The box an infinite mirror plane's caustics are aimed into: that of the scene's bounded
+/// objects (none: the plane cannot be aimed at).
+template <class SceneT> [[nodiscard]] std::optional<BBox<typename SceneT::scalar_type>> mirror_aim_box(const SceneT& scene) {
+    const auto bounds = scene.bounds();
+    if (!bounds.is_finite()) return std::nullopt;
+    return bounds;
+}
+
+/// What caustic photons aim at for object `i`: its bounding ball, or, for an infinite plane, the
+/// scene's bounded objects seen in it (AimTarget); nothing for another unbounded shape.
+template <class SceneT>
+[[nodiscard]] std::optional<AimTarget<typename SceneT::scalar_type>> aim_target(const SceneT& scene, std::uint32_t i) {
+    using S = typename SceneT::scalar_type;
+    const Ball<S> ball = scene.object_bounding_ball(i);
+    if (std::isfinite(ball.radius)) return AimTarget<S>{ball, scene.object_bounds(i), std::nullopt};
+    if (const auto* plane = std::get_if<Plane<S>>(&scene.objects()[i].shape))
+        if (const auto seen = mirror_aim_box(scene)) return AimTarget<S>{ball_around(*seen), *seen, *plane};
+    return std::nullopt;
+}
+
+/// Whether caustic photons can be aimed at object `i`: a caustic target with finite bounds, or an
+/// infinite plane in a scene with bounded objects for its caustics to land on.
 template <class SceneT> [[nodiscard]] bool is_aimable_target(const SceneT& scene, std::uint32_t i) {
-    return scene.is_caustic_target(i) && scene.object_bounds(i).is_finite();
+    return scene.is_caustic_target(i) && aim_target(scene, i).has_value();
 }
 
 /// Whether a light's cone (axis, half-angle) and a target's cone of directions can share a
@@ -129,17 +208,17 @@ template <Scalar S> [[nodiscard]] bool cones_meet(const Cone<S>& light, const Ta
     return between <= light_half + target_half + 1e-3;
 }
 
-/// The cones of every light towards every aimable caustic target, but those with `skip[i]` (the
+/// The cones of every light towards every aimable caustic target (a ball around each, the
+/// mirrored scene for an infinite mirror plane), but those with `skip[i]` (the
 /// light-path plan's targets whose caustics the camera cannot see) and, for a light with a cone
 /// (a spotlight), the targets its cone cannot reach: their photons would all be thrown away.
 template <class SceneT>
 [[nodiscard]] CausticAim<typename SceneT::scalar_type> caustic_aim(const SceneT& scene, const std::vector<bool>& skip = {}) {
     using S = typename SceneT::scalar_type;
-    std::vector<std::pair<Vec3<S>, S>> targets;
+    std::vector<AimTarget<S>> targets;
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
-        if (!is_aimable_target(scene, i) || (i < skip.size() && skip[i])) continue;
-        const BBox<S> b = scene.object_bounds(i);
-        targets.push_back({b.center(), glm::length(b.extent()) * S(0.5)});
+        if (!scene.is_caustic_target(i) || (i < skip.size() && skip[i])) continue;
+        if (const auto target = aim_target(scene, i)) targets.push_back(*target);
     }
     CausticAim<S> aim;
     if (targets.empty()) return aim;
@@ -156,7 +235,8 @@ template <class SceneT>
 
 /// What to tell the user about each object unaimed_specular_objects() lists.
 inline constexpr const char* unaimed_caustics_warning =
-    "mirror or glass object that caustic photons are not aimed at (an infinite plane, or no `target`): "
+    "mirror or glass object that caustic photons are not aimed at (unbounded and not a plane, a plane in a scene "
+    "with no bounded object, or no `target`): "
     "its caustics come from the global photons alone, rendered but noisier";
 
 /// Mirror and glass objects the caustic pass cannot aim at: their caustics reach the caustic map

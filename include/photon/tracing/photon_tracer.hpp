@@ -241,8 +241,9 @@ template <class SceneT> [[nodiscard]] bool scene_has_caustics(const SceneT& scen
     return specular && diffuse && detail::has_emitting_light(scene.lights());
 }
 
-/// Caustic pass: photons aimed into `aim`'s cones (the caustic targets' bounding spheres), stored
-/// only at the end of L S+ D paths. Empty (and free) when the scene has no caustics or nothing
+/// Caustic pass: photons aimed into `aim`'s cones (the caustic targets' bounding balls), stored
+/// only at the end of L S+ D paths; those aimed at an infinite mirror plane come back in
+/// `unaimed_caustics` (spread like the global map's, they are read with its settings). Empty (and free) when the scene has no caustics or nothing
 /// to aim at.
 template <class SceneT>
 [[nodiscard]] TracedPhotons trace_caustic_photons(const SceneT& scene, const PhotonTracingSettings& settings,
@@ -263,7 +264,13 @@ template <class SceneT>
         // drawn with, where plan.scale = power / n and I = profile * power / emission solid angle.
         const Rgb<S> power = plan.scale[l] * (profile / (emission_solid_angle(light) * sample.pdf));
         const Vec3<S> origin = sample_emission_origin(light, sample.direction, rng.uniform2<S>());
+        const std::size_t before = block.photons.size();
         detail::trace_photon_path(scene, light, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
+        if (sample.broad) {  // a mirror plane's: kept apart, read like the global map
+            block.unaimed_caustics.insert(block.unaimed_caustics.end(), block.photons.begin() + std::ptrdiff_t(before),
+                                          block.photons.end());
+            block.photons.resize(before);
+        }
     });
 }
 
