@@ -5,6 +5,7 @@
 // soft shadows; none for a light that casts no shadows. Phong highlights are added here only, for direct light.
 
 #include <cmath>
+#include <span>
 #include <vector>
 
 #include "../geometry/bbox.hpp"
@@ -12,6 +13,7 @@
 #include "../material/fresnel.hpp"
 #include "../material/material.hpp"
 #include "../math/sampling.hpp"
+#include "separating_wall.hpp"
 #include "shading_context.hpp"
 
 namespace photon {
@@ -68,6 +70,11 @@ template <class SceneT, Scalar S>
             BBox<S> region = BBox<S>::of_point(shadow_origin);
             region.extend(BBox<S>{reach - light_radius(light), reach + light_radius(light)});
             scene.occluders_in(region, ctx.occluders);
+            // A wall across every ray to this light (a lamp in another room): none can arrive.
+            if (wall_between(scene, std::span<const std::uint32_t>(ctx.occluders), shadow_origin, reach, light_radius(light))) {
+                ++ctx.rays.walled_lights;
+                continue;
+            }
         }
         Rgb<S> sum(S(0));
         for (unsigned i = 0; i < count; ++i) {
