@@ -299,9 +299,9 @@ private:
                     out_ << "triangle { " << vec(tri[0]) << ", " << vec(tri[1]) << ", " << vec(tri[2]) << " }\n";
                 }
             }
-        } else if (const auto* c = std::get_if<CsgShape>(&o.shape)) {
-            out_ << keyword(c->operation) << " {\n";
-            for (const auto& child : c->children) object(*child, level + 1);
+        } else if (const auto* csg = std::get_if<CsgShape>(&o.shape)) {
+            out_ << keyword(csg->operation) << " {\n";
+            for (const auto& child : csg->children) object(*child, level + 1);
         } else {
             const auto& u = std::get<UnionShape>(o.shape);
             out_ << "union {\n";
