@@ -47,8 +47,8 @@ template <Scalar S> struct AimTarget {
 };
 
 namespace detail {
-/// 1 - cos of the half-angle of the narrowest cone from `origin` (widened by `widen`, a sphere
-/// around it) about `axis` holding the box, or 2 (every direction) when no cone of at most
+/// 1 - cos of the half-angle of the cone about `axis` from `origin` (widened by `widen`, a sphere
+/// around it) that holds the box, or 2 (every direction) when no such cone of at most
 /// 90 degrees does: a wider cone is not convex, so holding the corners would not prove holding
 /// the box.
 template <Scalar S>
