@@ -9,7 +9,7 @@
 
 #include "../geometry/bbox.hpp"
 #include "../light/light.hpp"
-#include "../material/fresnel.hpp"
+#include "../material/highlight.hpp"
 #include "../material/material.hpp"
 #include "../math/sampling.hpp"
 #include "shading_context.hpp"
@@ -20,17 +20,6 @@ namespace photon {
 [[nodiscard]] inline unsigned strata_per_axis(unsigned samples) noexcept {
     const auto n = static_cast<unsigned>(std::ceil(std::sqrt(double(samples)) - 1e-9));
     return n == 0 ? 1 : n;
-}
-
-/// POV-Ray's phong term for light arriving from unit `wi`, seen from `wo`: strength *
-/// cos(alpha)^size, alpha between the mirrored light direction and the viewer; E / pi converts
-/// it to radiance units. Direct light only: it is not a BRDF that paths could sample.
-template <Scalar S>
-[[nodiscard]] S phong_highlight(const Material<S>& material, const Vec3<S>& n, const Vec3<S>& wo, const Vec3<S>& wi) noexcept {
-    const S phong = material.params().phong;
-    if (!(phong > S(0))) return S(0);
-    const S c = glm::dot(reflect(-wi, n), wo);
-    return c > S(0) ? phong * std::pow(c, material.params().phong_exponent) * inv_pi<S> : S(0);
 }
 
 /// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
