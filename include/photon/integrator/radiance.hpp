@@ -3,7 +3,8 @@
 // Pass 2: radiance along a camera ray (paper, Figure 1, "ShadeRayPM"). At a diffuse hit the
 // reflected radiance is split as in section 5: direct light by shadow rays, caustics from the
 // caustic map, indirect light from the global map, read directly or through final gathering
-// (Figure 2). Mirror and glass recurse up to the maximum ray depth.
+// (Figure 2). Mirror and glass recurse up to the maximum ray depth. A material's ambient
+// radiance is added where camera, mirror and glass rays meet it; gather rays do not see it.
 
 #include <limits>
 #include <optional>
@@ -39,7 +40,7 @@ public:
         const Facing<S> f = facing(surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
-        Rgb<S> result(S(0));
+        Rgb<S> result = material.ambient_at(x);  // seen by camera, mirror and glass rays, not by gathers
         if (material.has_diffuse()) {
             const Vec3<S> above = offset_origin(x, f.normal, error);
             const Rgb<S> albedo = material.diffuse_at(x);
