@@ -428,7 +428,7 @@ private:
     MaterialId material_for(const Inherited& in, const Object& o) {
         static const Texture pov_default{};
         const Texture& tex = in.texture ? *in.texture : pov_default;
-        MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, warn_, o.at);
+        MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, desc_.version, warn_, o.at);
         const PigmentPattern* pattern = tex.pigment.pattern.get();
         const Transform placement = pattern ? in.texture_placement : Transform{};
         for (const auto& m : materials_)
@@ -445,7 +445,9 @@ private:
     }
     static bool same(const MaterialParams<S>& a, const MaterialParams<S>& b) {
         return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
-               a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent;
+               a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent &&
+               a.blinn == b.blinn && a.blinn_exponent == b.blinn_exponent && a.metallic == b.metallic &&
+               a.highlight_color == b.highlight_color && a.brilliance == b.brilliance && a.ambient == b.ambient;
     }
 
 
