@@ -132,3 +132,20 @@ TEST_CASE("bad finish values are errors at their place", "[dsl][finish][errors]"
     CHECK(error_of(s + "brilliance -2 } }") == col("brilliance -2", "-") + "`brilliance` must be >= 0, found -2");
     CHECK(error_of(s + "brilliance 0 metallic } }").empty());
 }
+
+TEST_CASE("a scene without lights shows its ambient, and says so", "[dsl][finish]") {
+    const auto warning_of = [](const std::string& finish) {
+        std::vector<dsl::Diagnostic> w;
+        dsl::ParseOptions po;
+        po.diagnostics = collect(w);
+        const auto desc = dsl::parse_string("#version 3.7;\ncamera { location -5*z look_at 0 }\nsphere { 0, 1 pigment { rgb 1 } " +
+                                                finish + " }\n",
+                                            "test.pov", po);
+        dsl::BuildOptions bo;
+        bo.diagnostics = collect(w);
+        (void)dsl::build<double>(desc, bo);
+        return all_messages(w);
+    };
+    CHECK_THAT(warning_of(""), Contains("no light_source: only its surfaces' ambient and emission will show"));
+    CHECK_THAT(warning_of("finish { ambient 0 }"), Contains("no light_source: the image will be black"));
+}
