@@ -154,13 +154,26 @@ TEST_CASE("every mode renders POV-Ray's finish terms alike", "[finish][render]")
     double brightest = 0;
     for (std::size_t i = 0; i < rt.size(); ++i) brightest = std::max(brightest, rt[i].x / rt_plain[i].x);
     CHECK(brightest > 1.5);
+    // A black floor with a highlight (POV-Ray's black ball with `phong 1`): the highlight alone.
+    MaterialParams<double> black;
+    black.phong = 0.8;
+    black.phong_exponent = 10;
+    black.blinn = 0.5;
+    const auto rt_black = cells_of(black, RenderMode::rt, 4);
+    double black_max = 0;
+    for (const auto& c : rt_black) black_max = std::max(black_max, c.x);
+    CHECK(black_max > 0.01);
     for (const auto& [mode, spp] : {std::pair{RenderMode::pm, 4u}, {RenderMode::sppm, 1u}, {RenderMode::reference, 256u}}) {
-        const auto other = cells_of(shiny, mode, spp);
-        for (std::size_t i = 0; i < rt.size(); ++i)
-            for (int c = 0; c < 3; ++c) {
-                INFO("mode " << to_string(mode) << ", cell " << i << ", channel " << c);
-                CHECK(other[i][c] == Approx(rt[i][c]).epsilon(0.04).margin(2e-4));
-            }
+        for (const MaterialParams<double>* floor : {&shiny, static_cast<const MaterialParams<double>*>(&black)}) {
+            const auto other = cells_of(*floor, mode, spp);
+            const auto& expected = floor == &shiny ? rt : rt_black;
+            for (std::size_t i = 0; i < rt.size(); ++i)
+                for (int c = 0; c < 3; ++c) {
+                    INFO("mode " << to_string(mode) << (floor == &shiny ? ", shiny" : ", black") << " floor, cell " << i
+                                 << ", channel " << c);
+                    CHECK(other[i][c] == Approx(expected[i][c]).epsilon(0.04).margin(2e-4));
+                }
+        }
     }
 }
 

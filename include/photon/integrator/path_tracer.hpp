@@ -75,7 +75,7 @@ public:
             // and brilliance show here, and only here, as in radiance() and sppm's camera paths.
             const bool seen = arrival.kind == Arrival::unseen;
             if (seen) result += throughput * material.ambient_at(x);
-            if (material.has_diffuse())
+            if (material.has_diffuse() || (seen && material.has_highlight()))  // a highlight needs no diffuse
                 result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction,
                                                      material, sc.diffuse, pd, seen, ctx);
             const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng);

@@ -75,7 +75,7 @@ template <class SceneT>
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing
-        if (material.has_diffuse()) {
+        if (material.has_diffuse() || material.has_highlight()) {  // as radiance(): a highlight needs no diffuse
             const Vec3<S> above = offset_origin(x, f.normal, error);
             path.direct += throughput * direct_lighting(scene, x, above, f.normal, -ray.direction, material,
                                                         material.diffuse_at(x), settings.shadow_samples, ctx);
