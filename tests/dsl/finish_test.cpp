@@ -109,6 +109,19 @@ TEST_CASE("ambient is POV-Ray 3.7's: pigment * opacity * ambient * ambient_light
     }
 }
 
+TEST_CASE("diffuse albedo warns where it would change POV-Ray's render: with brilliance", "[dsl][finish]") {
+    std::vector<dsl::Diagnostic> w;
+    (void)finish_material("finish { ambient 0 diffuse albedo 0.5 }", w);
+    CHECK(w.empty());
+    const std::string mods = "finish { ambient 0 diffuse albedo 0.5 brilliance 3 }";
+    (void)finish_material(mods, w);
+    CHECK(places(w, "approximated finish") ==
+          std::vector<std::string>{"4:" + std::to_string(std::string("sphere { 0, 1 ").size() + mods.find("diffuse") + 1) +
+                                   " diffuse"});
+    REQUIRE(w.size() == 1);
+    CHECK_THAT(w[0].message, Contains("(brilliance + 1) / 2 = 2"));
+}
+
 TEST_CASE("brilliance warns only where POV-Ray passes it on: radiosity and photons", "[dsl][finish]") {
     std::vector<dsl::Diagnostic> w;
     (void)finish_material("finish { ambient 0 brilliance 3 }", w, "#version 3.7;\nglobal_settings { radiosity { } }\n");

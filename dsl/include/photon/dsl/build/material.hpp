@@ -111,6 +111,12 @@ template <Scalar S>
                  "` shapes the direct light the camera sees, as in POV-Ray; the light this surface passes on to "
                  "others, and the photons it receives, stay Lambertian (brilliance 1)",
              "approximated finish", "brilliance");
+    if (f.diffuse_albedo && f.brilliance != 1)
+        warn(item("diffuse"),
+             "`diffuse albedo` with `brilliance " + format_number(f.brilliance) +
+                 "`: POV-Ray scales the direct light by (brilliance + 1) / 2 = " + format_number((f.brilliance + 1) / 2) +
+                 "; photon keeps `diffuse` as written",
+             "approximated finish", "diffuse");
     if (f.diffuse_back != 0)
         warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon", "approximated finish", "diffuse");
     const bool tinted = f.metallic > 0 && (f.phong > 0 || f.specular > 0);

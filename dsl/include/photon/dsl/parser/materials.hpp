@@ -105,7 +105,8 @@ inline Finish Parser::parse_finish(const Token& kw, Finish f) {
         if (w == "ambient") {
             f.ambient = to_color(parse_expression_for("the ambient colour")).rgb;  // < 0 too: build says what photon uses
         } else if (w == "diffuse") {
-            if (peek().is_identifier("albedo")) next();
+            f.diffuse_albedo = peek().is_identifier("albedo");
+            if (f.diffuse_albedo) next();
             f.diffuse = parse_nonnegative("`diffuse`");
             if (accept_symbol(",")) {
                 f.diffuse_back = parse_nonnegative("the back-side `diffuse`");
