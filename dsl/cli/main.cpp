@@ -254,6 +254,10 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         if (p.transmission != photon::Rgb<float>(0) || p.fresnel)
             std::cout << ", ior " << p.ior << (p.fresnel ? " (Fresnel)" : "");
         if (p.phong > 0) std::cout << ", phong " << p.phong << " size " << p.phong_exponent;
+        if (p.blinn > 0) std::cout << ", blinn " << p.blinn << " exponent " << p.blinn_exponent;
+        if (p.metallic > 0 && (p.phong > 0 || p.blinn > 0)) std::cout << ", metallic " << p.metallic;
+        if (p.brilliance != 1) std::cout << ", brilliance " << p.brilliance;
+        if (p.ambient != photon::Rgb<float>(0)) std::cout << ", ambient " << rgb(p.ambient);
         std::cout << '\n';
     }
     std::cout << "settings   " << settings_line(b.settings) << '\n';

@@ -35,6 +35,7 @@
 #include "geometry/triangle_mesh.hpp"
 
 #include "material/fresnel.hpp"
+#include "material/highlight.hpp"
 #include "material/material.hpp"
 #include "material/scatter.hpp"
 

@@ -306,11 +306,11 @@ TEST_CASE("forms the sample scenes use: a spotlight's negative radius, a mesh2 c
 
 TEST_CASE("warnings about finish items and modifiers photon ignores carry a kind too", "[dsl][degradation]") {
     const Built b = build_text(std::string(lit) +
-                               "sphere { 0, 1 finish { ambient 0.2 specular 0.5 brilliance 2 } no_image }\n"
+                               "sphere { 0, 1 finish { ambient 0.2 diffuse 0.6, 0.3 crand 0.1 } no_image }\n"
                                "merge { sphere { 0, 1 } sphere { x, 1 } finish { ambient 0 } }\n"
                                "mesh { smooth_triangle { 0, y, x, y, y, y } finish { ambient 0 } }\n");
     CHECK(places(b.warnings, "approximated finish") ==
-          std::vector<std::string>{"3:24 ambient", "3:49 brilliance", "3:36 specular"});
-    CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"3:64 no_image", "5:8 smooth_triangle"});
+          std::vector<std::string>{"3:36 diffuse", "3:53 crand"});
+    CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"3:65 no_image", "5:8 smooth_triangle"});
     CHECK(places(b.warnings, "approximated object").empty());  // a merge is a merge
 }

@@ -59,6 +59,10 @@ void check_same_scene(const DefaultScene<S>& a, const PinholeCamera<S>& ca, cons
         CHECK(ma.ior == Approx(mb.ior));
         CHECK(ma.fresnel == mb.fresnel);
         CHECK(ma.phong == Approx(mb.phong));
+        CHECK(ma.blinn == Approx(mb.blinn));
+        CHECK(ma.metallic == Approx(mb.metallic));
+        CHECK(ma.brilliance == Approx(mb.brilliance));
+        CHECK(close(ma.ambient, mb.ambient, eps));
         CHECK(a.is_caustic_target(i) == b.is_caustic_target(i));
         CHECK(a.objects()[i].options.casts_shadow == b.objects()[i].options.casts_shadow);
     }
@@ -164,6 +168,21 @@ TEST_CASE("export-pov writes a file that reads back as the same scene", "[dsl][s
     const auto again = dsl::parse_string(dsl::export_pov(desc), "exported.pov");
     const auto a = dsl::build<double>(desc), b = dsl::build<double>(again);
     check_same_scene(a.scene, a.camera, b.scene, b.camera);
+}
+
+TEST_CASE("export-pov keeps POV-Ray's finish terms and whether ambient counts", "[dsl][scenes][export]") {
+    const std::string body = std::string(stage) +
+                             "sphere { 0, 1 pigment { rgb <1, 0.5, 0.25> } finish { ambient 0.3 emission 0.1 specular 0.5 "
+                             "roughness 0.02 metallic 0.5 brilliance 3 } }\n";
+    // 3.7 with radiosity: ambient off; 3.6 with radiosity and 3.7 without: ambient on.
+    for (const std::string prelude : {"#version 3.7;\nglobal_settings { radiosity { count 50 } }\n",
+                                      "#version 3.6;\nglobal_settings { radiosity { count 50 } }\n", "#version 3.7;\n"}) {
+        INFO(prelude);
+        const auto desc = dsl::parse_string(prelude + body, "finish.pov");
+        const auto again = dsl::parse_string(dsl::export_pov(desc), "exported.pov");
+        const auto a = dsl::build<double>(desc), b = dsl::build<double>(again);
+        check_same_scene(a.scene, a.camera, b.scene, b.camera);
+    }
 }
 
 TEST_CASE("every example scene renders a small image without NaN or Inf", "[dsl][scenes][render]") {

@@ -2,7 +2,8 @@
 #pragma once
 // Direct light by shadow rays (paper, section 5.1): one ray per point light, n x n stratified
 // rays per sphere light, whose unoccluded estimate is exact and whose partial occlusion gives
-// soft shadows; none for a light that casts no shadows. Phong highlights are added here only, for direct light.
+// soft shadows; none for a light that casts no shadows. POV-Ray's highlights and brilliance
+// (highlight.hpp) are added here only, for direct light.
 
 #include <cmath>
 #include <span>
@@ -10,7 +11,7 @@
 
 #include "../geometry/bbox.hpp"
 #include "../light/light.hpp"
-#include "../material/fresnel.hpp"
+#include "../material/highlight.hpp"
 #include "../material/material.hpp"
 #include "../math/sampling.hpp"
 #include "separating_wall.hpp"
@@ -24,21 +25,11 @@ namespace photon {
     return n == 0 ? 1 : n;
 }
 
-/// POV-Ray's phong term for light arriving from unit `wi`, seen from `wo`: strength *
-/// cos(alpha)^size, alpha between the mirrored light direction and the viewer; E / pi converts
-/// it to radiance units. Direct light only: it is not a BRDF that paths could sample.
-template <Scalar S>
-[[nodiscard]] S phong_highlight(const Material<S>& material, const Vec3<S>& n, const Vec3<S>& wo, const Vec3<S>& wi) noexcept {
-    const S phong = material.params().phong;
-    if (!(phong > S(0))) return S(0);
-    const S c = glm::dot(reflect(-wi, n), wo);
-    return c > S(0) ? phong * std::pow(c, material.params().phong_exponent) * inv_pi<S> : S(0);
-}
-
 /// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
 /// side, from every light, by shadow rays leaving from `shadow_origin` (x offset off the surface).
 /// `albedo` is the material's diffuse reflectance at x (material.diffuse_at(x)), read once by the
-/// caller, which needs it too.
+/// caller, which needs it too. Callers shade only points the camera sees (directly or through
+/// mirrors and glass): the highlights and brilliance apply there only.
 /// The light is evaluated at x itself, not at the offset origin: the offset grows with the
 /// distance from the world origin (1.5 cm at 1000 units in float) and would otherwise bias
 /// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
@@ -51,7 +42,8 @@ template <class SceneT, Scalar S>
                                      const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {}) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = albedo * inv_pi<S>;
-    const S phong = material.params().phong;
+    const bool highlights = material.has_highlight();
+    const Rgb<S> surface_color = highlights && material.params().metallic > S(0) ? material.highlight_color_at(x) : Rgb<S>(S(1));
     const auto lights = scene.lights();
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (l < reaches.size() && !reaches[l]) continue;
@@ -88,8 +80,8 @@ template <class SceneT, Scalar S>
                 const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
                 if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
             }
-            Rgb<S> f = brdf * cos_theta;
-            if (phong > S(0)) f += Rgb<S>(phong_highlight(material, n, wo, incident->direction));
+            Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
+            if (highlights) f += highlight(material, surface_color, n, wo, incident->direction);
             sum += f * incident->irradiance;
         }
         total += sum / S(count);

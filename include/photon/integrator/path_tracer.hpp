@@ -71,14 +71,21 @@ public:
             // share of the direct light here.
             const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
             const S pd = material.has_diffuse() ? average(sc.diffuse) : S(0);
-            if (material.has_diffuse())
+            // The camera sees x (through mirrors and glass at most): POV-Ray's ambient, highlights
+            // and brilliance show here, and only here, as in radiance() and sppm's camera paths.
+            const bool seen = arrival.kind == Arrival::unseen;
+            if (seen) result += throughput * material.ambient_at(x);
+            if (material.has_diffuse() || (seen && material.has_highlight()))  // a highlight needs no diffuse
                 result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction,
-                                                     material, sc.diffuse, pd, ctx);
+                                                     material, sc.diffuse, pd, seen, ctx);
             const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng);
             if (s.event == ScatterEvent::absorbed) break;
             throughput *= s.weight;
+            // Brilliance makes the direct light here something no path samples: light sampling
+            // alone counts it (weight 1), so the continuation gets no MIS share (density 0).
             if (s.event == ScatterEvent::diffuse)
-                arrival = {Arrival::diffuse, x, pd * glm::dot(f.normal, s.direction) * inv_pi<S>};
+                arrival = {Arrival::diffuse, x,
+                           seen && material.has_brilliance() ? S(0) : pd * glm::dot(f.normal, s.direction) * inv_pi<S>};
             else if (arrival.kind != Arrival::unseen)
                 arrival.kind = Arrival::specular;
             const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
@@ -102,13 +109,18 @@ private:
 
     /// One light sample per light at a diffuse vertex x (shadow rays from `shadow_origin`),
     /// reflected towards wo. The Lambertian part is weighted against the BSDF strategy, whose
-    /// density is pd cos / pi; the Phong highlight has weight 1, as no path samples it (it is
-    /// direct light only, as in pm's direct_lighting, which this matches).
+    /// density is pd cos / pi. Where the camera sees x (`seen`), POV-Ray's highlights and
+    /// brilliance apply (highlight.hpp), with weight 1, as no path samples them (they are
+    /// direct light only, as in pm's direct_lighting, which this matches); elsewhere x is
+    /// Lambertian, as gathers and photons see it.
     [[nodiscard]] Rgb<S> sample_lights(const Vec3<S>& x, const Vec3<S>& shadow_origin, const Vec3<S>& n,
                                        const Vec3<S>& wo, const Material<S>& material, const Rgb<S>& albedo, S pd,
-                                       ShadingContext& ctx) const {
+                                       bool seen, ShadingContext& ctx) const {
         Rgb<S> total(S(0));
         const Rgb<S> brdf = albedo * inv_pi<S>;
+        const bool highlights = seen && material.has_highlight();
+        const bool brilliance = seen && material.has_brilliance();
+        const Rgb<S> surface_color = highlights && material.params().metallic > S(0) ? material.highlight_color_at(x) : Rgb<S>(S(1));
         for (const Light<S>& light : scene_.lights()) {
             const auto sample = sample_light(light, x, ctx.rng.uniform2<S>());
             if (!sample) continue;
@@ -118,8 +130,9 @@ private:
                 ++ctx.rays.shadow;
                 if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;
             }
-            const S weight = sample->delta || !mis_ ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
-            const Rgb<S> f = brdf * (cos_theta * weight) + Rgb<S>(phong_highlight(material, n, wo, sample->direction));
+            const S weight = sample->delta || !mis_ || brilliance ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
+            Rgb<S> f = brdf * ((brilliance ? diffuse_cosine(material, cos_theta) : cos_theta) * weight);
+            if (highlights) f += highlight(material, surface_color, n, wo, sample->direction);
             total += f * sample->radiance / sample->pdf;
         }
         return total;

@@ -3,7 +3,8 @@
 // Pass 2: radiance along a camera ray (paper, Figure 1, "ShadeRayPM"). At a diffuse hit the
 // reflected radiance is split as in section 5: direct light by shadow rays, caustics from the
 // caustic map, indirect light from the global map, read directly or through final gathering
-// (Figure 2). Mirror and glass recurse up to the maximum ray depth.
+// (Figure 2). Mirror and glass recurse up to the maximum ray depth. A material's ambient
+// radiance is added where camera, mirror and glass rays meet it; gather rays do not see it.
 
 #include <limits>
 #include <optional>
@@ -39,8 +40,10 @@ public:
         const Facing<S> f = facing(surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
-        Rgb<S> result(S(0));
-        if (material.has_diffuse()) {
+        Rgb<S> result = material.ambient_at(x);  // seen by camera, mirror and glass rays, not by gathers
+        // A highlight shows on a surface without diffuse reflection too (POV-Ray's black or glass
+        // ball with `phong 1`): direct light is shaded for either.
+        if (material.has_diffuse() || material.has_highlight()) {
             const Vec3<S> above = offset_origin(x, f.normal, error);
             const Rgb<S> albedo = material.diffuse_at(x);
             const Rgb<S> brdf = albedo * inv_pi<S>;
@@ -52,12 +55,14 @@ public:
             case RenderMode::pm:
                 result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, albedo,
                                           settings_.shadow_samples, ctx, lights_reaching_);
+                if (!material.has_diffuse()) break;
                 result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
                                       ? final_gather(above, f.normal, ctx)
                                       : map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx));
                 break;
             case RenderMode::pm_direct:
+                if (!material.has_diffuse()) break;
                 result += brdf * (map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx) +
                                   caustic_irradiance(above, f.normal, ctx));
                 break;

@@ -54,7 +54,8 @@ template <Scalar S> struct CameraPath {
 }
 
 /// Follows the camera ray `ray` through mirrors and glass (up to settings.max_ray_depth, primary
-/// ray = 1) to its visible point, adding the direct light of every diffuse vertex on the way.
+/// ray = 1) to its visible point, adding the direct light (and the ambient radiance) of every
+/// vertex on the way.
 /// Lights stay invisible to the path, as to camera and mirror rays in every mode.
 template <class SceneT>
 [[nodiscard]] CameraPath<typename SceneT::scalar_type> trace_camera_path(const SceneT& scene,
@@ -73,7 +74,8 @@ template <class SceneT>
         const Facing<S> f = facing(surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
-        if (material.has_diffuse()) {
+        path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing
+        if (material.has_diffuse() || material.has_highlight()) {  // as radiance(): a highlight needs no diffuse
             const Vec3<S> above = offset_origin(x, f.normal, error);
             path.direct += throughput * direct_lighting(scene, x, above, f.normal, -ray.direction, material,
                                                         material.diffuse_at(x), settings.shadow_samples, ctx);

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The paper's surface model: a Lambertian diffuse part, a perfect mirror part and a perfect
-// transmission part, each with its own reflectance per RGB channel, plus a Phong highlight that
-// only direct light sees. Glass splits its transmission into reflection and refraction by the
+// transmission part, each with its own reflectance per RGB channel. On top, POV-Ray's finish
+// terms that only the light-source light seen by the camera (directly or through mirrors and
+// glass) shows: Phong and Blinn highlights, metallic tint, brilliance, and a constant ambient
+// radiance; none of them carries light further (highlight.hpp says why). Glass splits its transmission into reflection and refraction by the
 // Fresnel equations, with total internal reflection. The diffuse reflectance may vary over the
 // surface (a texture): it is then evaluated at each hit point, by every pass alike.
 
@@ -26,6 +28,20 @@ template <Scalar S> struct MaterialParams {
     bool fresnel = false;       ///< split transmission into reflection F and refraction 1 - F
     S phong = S(0);             ///< Phong highlight strength (direct light only, not energy conserving)
     S phong_exponent = S(40);   ///< Phong exponent (POV-Ray's phong_size)
+    S blinn = S(0);             ///< Blinn highlight strength, POV-Ray's `specular` (direct light only, like phong)
+    S blinn_exponent = S(20);   ///< Blinn exponent: 1 / POV-Ray's `roughness` (default roughness 0.05)
+    /// 0 to 1: how far the highlights take the surface's colour instead of the light's (POV-Ray's
+    /// `metallic`), less so at grazing light.
+    S metallic = S(0);
+    /// The surface colour metallic highlights take (POV-Ray's pigment); with a texture, its factor.
+    Rgb<S> highlight_color{S(1)};
+    /// Direct light's diffuse term is albedo / pi * cos^brilliance (POV-Ray's `brilliance`; 1 is
+    /// Lambertian). Photons and gathered light stay Lambertian.
+    S brilliance = S(1);
+    /// Radiance the surface shows by itself to camera, mirror and glass rays, whatever lights it
+    /// (POV-Ray's `ambient` times `ambient_light`, plus `emission`); with a texture, its factor.
+    /// It lights nothing: photons, shadow rays and gathers never see it.
+    Rgb<S> ambient{S(0)};
     /// Optional texture: the albedo at point p is then diffuse * diffuse_texture(p).
     AnyReflectanceField<S> diffuse_texture{};
 };
@@ -39,7 +55,8 @@ template <Scalar S> struct Scattering {
 /// A validated surface material. Invariants (checked at construction, std::invalid_argument with
 /// the offending values otherwise): every reflectance is finite and >= 0; diffuse + specular +
 /// transmission <= 1 in every channel (energy conservation; with a texture, diffuse times the
-/// texture's upper bound); ior > 0 and finite; phong >= 0.
+/// texture's upper bound); ior > 0 and finite; phong, blinn >= 0 with exponents > 0; metallic
+/// in [0, 1]; brilliance >= 0; ambient and highlight_color finite and >= 0.
 template <Scalar S> class Material {
 public:
     explicit Material(const MaterialParams<S>& params);
@@ -73,6 +90,20 @@ public:
     [[nodiscard]] Rgb<S> max_diffuse() const noexcept {
         return params_.diffuse_texture ? params_.diffuse * params_.diffuse_texture.upper_bound() : params_.diffuse;
     }
+    /// The ambient radiance at surface point `p` (zero for most materials).
+    [[nodiscard]] Rgb<S> ambient_at(const Vec3<S>& p) const {
+        if (!has_ambient_) [[likely]]
+            return Rgb<S>(S(0));
+        return params_.diffuse_texture ? params_.ambient * params_.diffuse_texture(p) : params_.ambient;
+    }
+    /// The colour metallic highlights take at surface point `p`.
+    [[nodiscard]] Rgb<S> highlight_color_at(const Vec3<S>& p) const {
+        return params_.diffuse_texture ? params_.highlight_color * params_.diffuse_texture(p) : params_.highlight_color;
+    }
+    /// True when direct light shows a highlight (phong or blinn).
+    [[nodiscard]] bool has_highlight() const noexcept { return params_.phong > S(0) || params_.blinn > S(0); }
+    /// True when direct light's diffuse term is not Lambertian (brilliance other than 1).
+    [[nodiscard]] bool has_brilliance() const noexcept { return params_.brilliance != S(1); }
     [[nodiscard]] S ior() const noexcept { return params_.ior; }
     [[nodiscard]] bool has_diffuse() const noexcept { return has_diffuse_; }
     /// True when the surface can reflect or refract specularly (it can form caustics).
@@ -96,14 +127,15 @@ public:
 private:
     MaterialParams<S> params_;
     bool has_diffuse_ = false;  ///< some point of the surface reflects diffusely
+    bool has_ambient_ = false;  ///< the surface shows an ambient radiance somewhere
 };
 
 template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(p) {
     auto fail = [](const std::string& what) { throw std::invalid_argument("material: " + what); };
-    auto check_rgb = [&](const Rgb<S>& c, const char* name) {
+    auto check_rgb = [&](const Rgb<S>& c, const char* name, const char* what = "reflectance") {
         if (!is_finite(c) || min_component(c) < S(0)) {
             std::ostringstream os;
-            os << name << " reflectance must be finite and >= 0, got <" << c.x << ", " << c.y << ", " << c.z << ">";
+            os << name << ' ' << what << " must be finite and >= 0, got <" << c.x << ", " << c.y << ", " << c.z << ">";
             fail(os.str());
         }
     };
@@ -133,6 +165,21 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
     }
     if (!(p.phong >= S(0)) || !std::isfinite(p.phong) || !(p.phong_exponent > S(0)) || !std::isfinite(p.phong_exponent))
         fail("phong must be >= 0 and phong_exponent > 0, both finite");
+    if (!(p.blinn >= S(0)) || !std::isfinite(p.blinn) || !(p.blinn_exponent > S(0)) || !std::isfinite(p.blinn_exponent))
+        fail("blinn must be >= 0 and blinn_exponent > 0, both finite");
+    if (!(p.metallic >= S(0) && p.metallic <= S(1))) {
+        std::ostringstream os;
+        os << "metallic must be in [0, 1], got " << p.metallic;
+        fail(os.str());
+    }
+    if (!(p.brilliance >= S(0)) || !std::isfinite(p.brilliance)) {
+        std::ostringstream os;
+        os << "brilliance must be finite and >= 0, got " << p.brilliance;
+        fail(os.str());
+    }
+    check_rgb(p.ambient, "ambient", "radiance");
+    check_rgb(p.highlight_color, "highlight", "colour");
+    has_ambient_ = !is_black(p.ambient);
 }
 
 }  // namespace photon

@@ -146,6 +146,7 @@ struct Reflection {
 struct Finish {
     Vector3 ambient{0.1};
     double diffuse = 0.6, diffuse_back = 0;
+    bool diffuse_albedo = false;  ///< `diffuse albedo F`: POV-Ray scales direct light by (brilliance + 1) / 2
     double brilliance = 1;
     double specular = 0, roughness = 0.05;
     double phong = 0, phong_size = 40;

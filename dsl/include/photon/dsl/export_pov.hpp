@@ -6,6 +6,7 @@
 // photon's own settings inside `#ifdef (photon_version) ... #end`, which POV-Ray skips. Reading
 // the result again gives the same description (a round trip the tests check).
 
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -36,7 +37,7 @@ public:
              << "// Declarations, includes, conditions and expressions are evaluated; photon's own settings are\n"
              << "// inside #ifdef (photon_version), which POV-Ray skips.\n"
              << "#version 3.7;\n\n";
-        settings(d.settings);
+        settings(d.settings, d.version);
         if (d.camera) camera(*d.camera);
         for (const Object& o : d.objects) object(o, 0);
         return out_.str();
@@ -50,7 +51,7 @@ private:
         for (int i = 0; i < level; ++i) out_ << "  ";
     }
 
-    void settings(const GlobalSettings& g) {
+    void settings(const GlobalSettings& g, std::optional<double> version) {
         out_ << "global_settings {\n";
         if (g.assumed_gamma) out_ << "  assumed_gamma " << num(*g.assumed_gamma) << '\n';
         if (g.written.count("ambient_light")) out_ << "  ambient_light rgb " << vec(g.ambient_light) << '\n';
@@ -66,7 +67,12 @@ private:
             if (p.max_trace_level) out_ << " max_trace_level " << *p.max_trace_level;
             out_ << " }\n";
         }
-        if (g.radiosity) out_ << "  // the scene's radiosity block is not reproduced (photon does not read it)\n";
+        // Radiosity in a 3.7 scene switches `ambient` off (POV-Ray's rule, which photon follows):
+        // an empty block keeps that in the 3.7 file written here. Its settings photon does not read.
+        if (g.radiosity && version.value_or(3.62) >= 3.7 - 1e-9)
+            out_ << "  radiosity { }  // the scene's radiosity settings are not reproduced (photon does not read them)\n";
+        else if (g.radiosity)
+            out_ << "  // the scene's radiosity block is not reproduced: before 3.7 it left `ambient` on, as no radiosity does\n";
         out_ << "}\n";
         std::ostringstream own;
         table_items(g, false, own);

@@ -3,6 +3,7 @@
 // POV-Ray's texture and interior as photon's material: the finish-to-reflectance rule.
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include <photon/material/material.hpp>
@@ -20,13 +21,15 @@ namespace photon::dsl {
 /// library_pigment, carry the rest); transmission = filter * pigment + transmit, from a patterned
 /// pigment's average colour; mirror reflectance from
 /// `reflection`; `reflection { 0, 1 fresnel on }` with `conserve_energy` makes Fresnel glass;
-/// phong and phong_size carry over. Finish items photon does not render are reported to `warn`,
+/// phong and phong_size carry over, and POV-Ray's specular (blinn), roughness, metallic,
+/// brilliance, ambient and emission as POV-Ray 3.7 computes them (`version`: the scene's
+/// #version, none for a scene without one). Finish items photon does not render are reported to `warn`,
 /// as is a surface reflecting more than it receives, which is scaled down to conserve energy
 /// (reported at its finish, or at `object` for a default texture, which was written nowhere).
 template <Scalar S>
 [[nodiscard]] MaterialParams<S> material_params(const Texture& tex, const Interior* interior,
-                                                const GlobalSettings& global, Warnings& warn,
-                                                const SourceLocation& object = {}) {
+                                                const GlobalSettings& global, std::optional<double> version,
+                                                Warnings& warn, const SourceLocation& object = {}) {
     const Finish& f = tex.finish;
     const SourceLocation at = f.at.known() ? f.at : (tex.at.known() ? tex.at : object);
     auto item = [&](const char* k) {
@@ -85,26 +88,43 @@ template <Scalar S>
         if (r.falloff != 1 || r.exponent != 1 || r.metallic != 0)
             warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon", "approximated finish", "reflection");
     }
-    const Vector3 ambient = f.ambient * global.ambient_light;
-    if (ambient != Vector3(0.0))
-        warn(item("ambient"),
-             std::string(f.written.count("ambient") ? "`ambient`" : "POV-Ray's default `ambient 0.1`") +
-                 " is ignored: photon has no ambient light. Write `finish { ambient 0 }` or "
-                 "`global_settings { ambient_light 0 }`",
+    // POV-Ray 3.7's constant term (trace.cpp, ComputeLightedTexture): pigment * opacity *
+    // (ambient * ambient_light + emission), with the ambient part only where radiosity is off
+    // or the scene is older than 3.7 (no #version reads as 3.62).
+    const bool ambient_counts = !global.radiosity || version.value_or(3.62) < 3.7 - 1e-9;
+    const Vector3 written_glow = f.emission + (ambient_counts ? f.ambient * global.ambient_light : Vector3(0.0));
+    const Vector3 glow = glm::max(written_glow, Vector3(0.0));
+    if (glow != written_glow)
+        warn(item(f.written.count("ambient") || !f.written.count("emission") ? "ambient" : "emission"),
+             "ambient and emission sum to rgb " + rgb_text(written_glow) +
+                 " (POV-Ray subtracts light where negative): photon's surfaces show no negative light and it uses rgb " +
+                 rgb_text(glow),
              "approximated finish", "ambient");
-    if (f.brilliance != 1)
-        warn(item("brilliance"), "`brilliance " + format_number(f.brilliance) +
-                                     "` is ignored: photon's diffuse reflection is Lambertian (brilliance 1)",
+    if (global.radiosity && f.emission != Vector3(0.0))
+        warn(item("emission"),
+             "with radiosity, POV-Ray's `emission` also lights other surfaces; photon shows it on this surface "
+             "only (its light comes from light sources)",
+             "approximated finish", "emission");
+    if (f.brilliance != 1 && (global.radiosity || global.photons))
+        warn(item("brilliance"),
+             "`brilliance " + format_number(f.brilliance) +
+                 "` shapes the direct light the camera sees, as in POV-Ray; the light this surface passes on to "
+                 "others, and the photons it receives, stay Lambertian (brilliance 1)",
              "approximated finish", "brilliance");
-    if (f.specular != 0)
-        warn(item("specular"),
-             "`specular` (POV-Ray's Blinn highlight) is ignored by photon: use `phong` for a highlight", "approximated finish",
-             "specular");
-    if (f.emission != Vector3(0.0))
-        warn(item("emission"), "`emission` is ignored: only light sources emit light in photon", "approximated finish", "emission");
+    if (f.diffuse_albedo && f.brilliance != 1)
+        warn(item("diffuse"),
+             "`diffuse albedo` with `brilliance " + format_number(f.brilliance) +
+                 "`: POV-Ray scales the direct light by (brilliance + 1) / 2 = " + format_number((f.brilliance + 1) / 2) +
+                 "; photon keeps `diffuse` as written",
+             "approximated finish", "diffuse");
     if (f.diffuse_back != 0)
         warn(item("diffuse_back"), "the back-side value of `diffuse` is ignored by photon", "approximated finish", "diffuse");
-    if (f.metallic != 0) warn(item("metallic"), "`metallic` is ignored by photon", "approximated finish", "metallic");
+    const bool tinted = f.metallic > 0 && (f.phong > 0 || f.specular > 0);
+    if (tinted && pattern && (pc.filter != 0 || pc.transmit != 0))
+        warn(item("metallic"),
+             "`metallic` under a patterned pigment with filter or transmit: photon tints the highlight with the "
+             "pattern's colours times their opacity (POV-Ray: the colours alone)",
+             "approximated finish", "metallic");
     for (const char* k : {"irid", "crand"})
         if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon", "approximated finish", k);
 
@@ -137,6 +157,12 @@ template <Scalar S>
     if (!phong_size.message.empty()) warn(item("phong_size"), phong_size.message, "approximated finish", "phong_size");
     p.phong = S(f.phong);
     p.phong_exponent = S(phong_size.value);
+    p.blinn = S(f.specular);
+    p.blinn_exponent = S(1 / f.roughness);
+    p.metallic = S(f.metallic);
+    p.highlight_color = pattern ? Rgb<S>(S(1)) : Rgb<S>(pc.rgb);  // a pattern's colours come from the texture
+    p.brilliance = S(f.brilliance);
+    p.ambient = Rgb<S>(pattern ? glow : glow * pc.rgb * opacity);
     return p;
 }
 

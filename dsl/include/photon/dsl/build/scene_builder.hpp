@@ -73,7 +73,12 @@ public:
                   "nothing renders: photon skipped every object of the scene (" + std::to_string(skipped_) +
                       (skipped_ == 1 ? " object" : " objects") + " it has no shape for)",
                   "nothing renders", "");
-        if (scene.lights().empty()) warn_(desc_.at, "the scene has no light_source: the image will be black");
+        if (scene.lights().empty()) {
+            bool glows = false;  // POV-Ray's ambient and emission show without lights
+            for (const auto& m : scene.materials()) glows = glows || m.params().ambient != Rgb<S>(S(0));
+            warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"
+                                  : "the scene has no light_source: the image will be black");
+        }
     }
 
     /// Reads every mesh file the scene names, first, so that a missing one is the build's first
@@ -428,7 +433,7 @@ private:
     MaterialId material_for(const Inherited& in, const Object& o) {
         static const Texture pov_default{};
         const Texture& tex = in.texture ? *in.texture : pov_default;
-        MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, warn_, o.at);
+        MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, desc_.version, warn_, o.at);
         const PigmentPattern* pattern = tex.pigment.pattern.get();
         const Transform placement = pattern ? in.texture_placement : Transform{};
         for (const auto& m : materials_)
@@ -445,7 +450,9 @@ private:
     }
     static bool same(const MaterialParams<S>& a, const MaterialParams<S>& b) {
         return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
-               a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent;
+               a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent &&
+               a.blinn == b.blinn && a.blinn_exponent == b.blinn_exponent && a.metallic == b.metallic &&
+               a.highlight_color == b.highlight_color && a.brilliance == b.brilliance && a.ambient == b.ambient;
     }
 
 

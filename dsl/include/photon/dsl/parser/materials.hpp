@@ -89,11 +89,13 @@ inline Pigment Parser::parse_pigment_body(const Token& kw, Pigment p) {
     return p;
 }
 
+// FINISH: finish { [FINISH_IDENT] {ITEM} }, ITEM one of the finish_keywords with its value
 inline Finish Parser::parse_finish(const Token& kw, Finish f) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     f.at = kw.location;
     take_identifier(f, "a finish identifier or a finish item");
+    bool phong_albedo = false, specular_albedo = false;
     for (;;) {
         const Token t = peek();
         if (t.kind != TokenKind::identifier || !one_of(t.text, finish_keywords)) break;
@@ -101,30 +103,40 @@ inline Finish Parser::parse_finish(const Token& kw, Finish f) {
         const std::string& w = t.text;
         f.written[w] = t.location;
         if (w == "ambient") {
-            f.ambient = to_color(parse_expression_for("the ambient colour")).rgb;
+            f.ambient = to_color(parse_expression_for("the ambient colour")).rgb;  // < 0 too: build says what photon uses
         } else if (w == "diffuse") {
-            if (peek().is_identifier("albedo")) next();
+            f.diffuse_albedo = peek().is_identifier("albedo");
+            if (f.diffuse_albedo) next();
             f.diffuse = parse_nonnegative("`diffuse`");
             if (accept_symbol(",")) {
                 f.diffuse_back = parse_nonnegative("the back-side `diffuse`");
                 f.written["diffuse_back"] = t.location;
             }
         } else if (w == "brilliance") {
-            f.brilliance = parse_float("`brilliance`");
+            f.brilliance = parse_nonnegative("`brilliance`");
         } else if (w == "specular") {
-            if (peek().is_identifier("albedo")) next();
-            f.specular = parse_float("`specular`");
+            specular_albedo = peek().is_identifier("albedo");
+            if (specular_albedo) next();
+            f.specular = parse_nonnegative("`specular`");
         } else if (w == "roughness") {
-            f.roughness = parse_float("`roughness`");
+            SourceLocation at;
+            f.roughness = parse_float("`roughness`", &at);
+            if (!(f.roughness > 0) || !std::isfinite(f.roughness))
+                fail(at, "`roughness` must be > 0 and finite (the Blinn exponent is 1 / roughness), found " +
+                             format_number(f.roughness));
         } else if (w == "phong") {
-            if (peek().is_identifier("albedo")) next();
+            phong_albedo = peek().is_identifier("albedo");
+            if (phong_albedo) next();
             f.phong = parse_nonnegative("`phong`");
         } else if (w == "phong_size") {
             SourceLocation at;
             f.phong_size = parse_float("`phong_size`", &at);  // <= 0 too, as POV-Ray (build.hpp says what photon uses)
             if (!std::isfinite(f.phong_size)) fail(at, "`phong_size` must be finite, found " + format_number(f.phong_size));
         } else if (w == "metallic") {
-            f.metallic = starts_expression(peek()) ? parse_float("`metallic`") : 1.0;
+            SourceLocation at = t.location;
+            f.metallic = starts_expression(peek()) ? parse_float("`metallic`", &at) : 1.0;
+            if (!(f.metallic >= 0 && f.metallic <= 1))
+                fail(at, "`metallic` must be between 0 and 1, found " + format_number(f.metallic));
         } else if (w == "reflection") {
             f.reflection = parse_reflection(t);
         } else if (w == "reflection_exponent") {
@@ -149,6 +161,13 @@ inline Finish Parser::parse_finish(const Token& kw, Finish f) {
                 "a finish item (ambient, diffuse, brilliance, specular, phong, phong_size, reflection, "
                 "conserve_energy, emission)",
                 finish_keywords);
+    // `albedo` scales the strength written in this block, with the block's final size, as POV-Ray
+    // 3.7 does (parstxtr.cpp) so that strength 1 reflects all the light the highlight receives.
+    if (phong_albedo) f.phong *= (f.phong_size + 1) / 2;
+    if (specular_albedo) {
+        const double e = 1 / f.roughness;
+        f.specular *= (e + 2) / (4 * (2 - std::pow(2.0, -e / 2)));
+    }
     return f;
 }
 
