@@ -64,21 +64,21 @@ public:
             if (arrival.kind != Arrival::unseen) result += throughput * lights_met(ray, surface, arrival, ctx);
             if (!surface) break;
             const Material<S>& material = *surface->material;
-            const Facing<S> f = facing(surface->hit.normal, ray.direction);
+            const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
             const Vec3<S>& x = surface->hit.point;
             const S error = intersection_error(x, ray.origin);
             // Russian roulette's probability of the diffuse event (its pd), the BSDF strategy's
             // share of the direct light here.
-            const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
+            const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);
             const S pd = material.has_diffuse() ? average(sc.diffuse) : S(0);
             if (material.has_diffuse())
-                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction,
+                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.shading, f.normal, -ray.direction,
                                                      material, sc.diffuse, pd, ctx);
-            const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng);
+            const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng, PathFlow::from_camera);
             if (s.event == ScatterEvent::absorbed) break;
             throughput *= s.weight;
             if (s.event == ScatterEvent::diffuse)
-                arrival = {Arrival::diffuse, x, pd * glm::dot(f.normal, s.direction) * inv_pi<S>};
+                arrival = {Arrival::diffuse, x, pd * glm::dot(f.shading, s.direction) * inv_pi<S>};
             else if (arrival.kind != Arrival::unseen)
                 arrival.kind = Arrival::specular;
             const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
@@ -101,11 +101,12 @@ private:
     };
 
     /// One light sample per light at a diffuse vertex x (shadow rays from `shadow_origin`),
-    /// reflected towards wo. The Lambertian part is weighted against the BSDF strategy, whose
+    /// reflected towards wo; n is the shading normal, geometric_n the geometric one (light from
+    /// below the surface counts for nothing). The Lambertian part is weighted against the BSDF strategy, whose
     /// density is pd cos / pi; the Phong highlight has weight 1, as no path samples it (it is
     /// direct light only, as in pm's direct_lighting, which this matches).
     [[nodiscard]] Rgb<S> sample_lights(const Vec3<S>& x, const Vec3<S>& shadow_origin, const Vec3<S>& n,
-                                       const Vec3<S>& wo, const Material<S>& material, const Rgb<S>& albedo, S pd,
+                                       const Vec3<S>& geometric_n, const Vec3<S>& wo, const Material<S>& material, const Rgb<S>& albedo, S pd,
                                        ShadingContext& ctx) const {
         Rgb<S> total(S(0));
         const Rgb<S> brdf = albedo * inv_pi<S>;
@@ -113,7 +114,7 @@ private:
             const auto sample = sample_light(light, x, ctx.rng.uniform2<S>());
             if (!sample) continue;
             const S cos_theta = glm::dot(n, sample->direction);
-            if (!(cos_theta > S(0))) continue;
+            if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, sample->direction) > S(0))) continue;
             if (light_casts_shadows(light)) {
                 ++ctx.rays.shadow;
                 if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;

@@ -4,7 +4,8 @@
 // transmission part, each with its own reflectance per RGB channel, plus a Phong highlight that
 // only direct light sees. Glass splits its transmission into reflection and refraction by the
 // Fresnel equations, with total internal reflection. The diffuse reflectance may vary over the
-// surface (a texture): it is then evaluated at each hit point, by every pass alike.
+// surface (a texture): it is then evaluated at each hit point, by every pass alike. So may the
+// shading normal (a bump pattern, POV-Ray's `normal`): scatter.hpp's facing() tilts it.
 
 #include <cmath>
 #include <sstream>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "../math/vec.hpp"
+#include "../texture/normal_field.hpp"
 #include "../texture/reflectance_field.hpp"
 #include "fresnel.hpp"
 
@@ -28,6 +30,8 @@ template <Scalar S> struct MaterialParams {
     S phong_exponent = S(40);   ///< Phong exponent (POV-Ray's phong_size)
     /// Optional texture: the albedo at point p is then diffuse * diffuse_texture(p).
     AnyReflectanceField<S> diffuse_texture{};
+    /// Optional bumps: the shading normal at p is normal_field(p, geometric normal).
+    AnyNormalField<S> normal_field{};
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -72,6 +76,15 @@ public:
     /// Per channel, the largest diffuse albedo anywhere on the surface.
     [[nodiscard]] Rgb<S> max_diffuse() const noexcept {
         return params_.diffuse_texture ? params_.diffuse * params_.diffuse_texture.upper_bound() : params_.diffuse;
+    }
+    /// Whether a normal field tilts this surface's shading normal.
+    [[nodiscard]] bool has_normal_field() const noexcept { return bool(params_.normal_field); }
+    /// The unit shading normal at `p` for the unit outward geometric normal `n` (n itself
+    /// without a normal field), before facing() turns it to a ray's side and guards it.
+    [[nodiscard]] Vec3<S> shading_normal(const Vec3<S>& p, const Vec3<S>& n) const {
+        if (!params_.normal_field) [[likely]]
+            return n;
+        return params_.normal_field(p, n);
     }
     [[nodiscard]] S ior() const noexcept { return params_.ior; }
     [[nodiscard]] bool has_diffuse() const noexcept { return has_diffuse_; }
