@@ -254,6 +254,7 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         if (p.transmission != photon::Rgb<float>(0) || p.fresnel)
             std::cout << ", ior " << p.ior << (p.fresnel ? " (Fresnel)" : "");
         if (p.phong > 0) std::cout << ", phong " << p.phong << " size " << p.phong_exponent;
+        if (p.normal_field) std::cout << ", normal pattern (tilted shading normal)";
         std::cout << '\n';
     }
     std::cout << "settings   " << settings_line(b.settings) << '\n';

@@ -142,3 +142,28 @@ TEST_CASE("errors in a normal name their file, line and column", "[dsl][normal][
                Contains("1:24: `noise_generator 7` is not 1, 2 or 3"));
     CHECK_THAT(error_of("sphere { 0, 1 normal { bumps 0.5 "), Contains("1:"));
 }
+
+TEST_CASE("examples/scenes/normals.pov builds without warnings, and exported it builds the same normals",
+          "[dsl][normal]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    const auto desc = dsl::parse_file(std::filesystem::path(PHOTON_SCENES_DIR) / "normals.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto a = dsl::build<double>(desc, bo);
+    INFO(all_messages(warnings));
+    CHECK(warnings.empty());
+    std::size_t bumpy = 0;
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i) bumpy += a.scene.material_of(i).has_normal_field();
+    CHECK(bumpy == 8);  // the floor, the back wall, five balls and the checker ball
+    const auto b = dsl::build<double>(dsl::parse_string(dsl::export_pov(desc), "exported.pov"));
+    REQUIRE(b.scene.objects().size() == a.scene.objects().size());
+    const Vec3<double> n = glm::normalize(Vec3<double>(0.3, 1, -0.2));
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i)
+        for (const Vec3<double>& p : {Vec3<double>(0.3, 0.01, -0.7), Vec3<double>(-0.88, 0.4, 0.2), Vec3<double>(0.6, 0.3, 1.2)}) {
+            INFO("object " << i);
+            const Vec3<double> x = a.scene.material_of(i).shading_normal(p, n), y = b.scene.material_of(i).shading_normal(p, n);
+            CHECK(glm::length(x - y) < 1e-9);
+        }
+}
