@@ -134,6 +134,19 @@ TEST_CASE("normals photon cannot evaluate are ignored with a warning at the patt
     CHECK(b.scene.material_of(2).has_normal_field());  // bumps, with POV-Ray's default scaling
 }
 
+TEST_CASE("a bump size after any pattern, with or without a comma, is read", "[dsl][normal]") {
+    // The forms of POV-Ray's sample scenes (balcony's water.inc, brick.pov, densfile.pov, fractals1.pov).
+    const auto b = build_normals(
+        "#declare A = 0.3;\n"
+        "sphere { 0, 1 normal { bumps, A } }\n"
+        "sphere { 0, 1 normal { function { x * y } 0.8 scale 0.3 } }\n"
+        "sphere { 0, 1 normal { pigment_pattern { brick color rgb 1 color rgb 0.5 scale 0.1 } , 0.5 } }\n"
+        "sphere { 0, 1 normal { magnet 1 mandel 50 .2 } }\n");
+    CHECK(b.desc.objects[1].texture->normal->amount == 0.3);
+    CHECK(b.scene.material_of(0).has_normal_field());
+    CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"6:24 normal", "7:24 normal", "8:33 normal"});
+}
+
 TEST_CASE("errors in a normal name their file, line and column", "[dsl][normal][errors]") {
     CHECK_THAT(error_of("sphere { 0, 1 normal { bumps accuracy 0 } }"), Contains("1:39: accuracy must be positive"));
     CHECK_THAT(error_of("#declare P = pigment { rgb 1 }\nsphere { 0, 1 normal { P } }"),

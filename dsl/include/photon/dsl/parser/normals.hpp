@@ -14,7 +14,7 @@
 
 namespace photon::dsl::detail {
 
-// NORMAL: normal { [NORMAL_IDENT] [PATTERN [AMOUNT]] {PATTERN_MODIFIER | bump_size FLOAT
+// NORMAL: normal { [NORMAL_IDENT] [PATTERN [[,] AMOUNT]] {PATTERN_MODIFIER | bump_size FLOAT
 //         | accuracy FLOAT | no_bump_scale | TRANSFORMATION} }
 //   PATTERN: bumps | dents | ripples | waves | wrinkles | an evaluated pattern (gradient VECTOR [,])
 inline Normal Parser::parse_normal(const Token& kw, Normal n) {
@@ -29,7 +29,15 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
         const Token t = peek();
         if (t.is_symbol("}")) break;
         if (try_transform(n.transform)) continue;
-        if (t.kind != TokenKind::identifier) break;
+        if (t.is_symbol(",")) {  // POV-Ray's optional comma before the bump size
+            next();
+            continue;
+        }
+        if (t.kind != TokenKind::identifier) {
+            if (!starts_expression(t)) break;
+            n.amount = parse_float("the bump size");  // after a pattern photon reads for its syntax
+            continue;
+        }
         if (one_of(t.text, normal_patterns) || one_of(t.text, evaluated_patterns)) {
             st.pattern = next();
             if (t.text == "gradient" && starts_expression(peek())) {
@@ -50,7 +58,11 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
             next();
             degrade(t.location, degraded::approximated_texture, t.text,
                     "`no_bump_scale` is ignored: photon's bumps keep their steepness when the normal is scaled");
-        } else if (!parse_pattern_item(st)) {
+        } else if (parse_pattern_item(st)) {
+            continue;
+        } else if (starts_expression(t)) {  // a declared float: the bump size
+            n.amount = parse_float("the bump size");
+        } else {
             // Syntax photon does not know here (bump_map, facets' coords, ...): the rest of the
             // block is read as balanced tokens, and the normal is ignored.
             stray = t;
