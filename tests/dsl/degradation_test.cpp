@@ -238,7 +238,7 @@ TEST_CASE("camera types and lights photon lacks are approximated", "[dsl][degrad
     CHECK_THAT(error_of("camera { angle 360 }\nsphere { 0, 1 }"), Contains("camera `angle` must be between 0 and 180"));
 }
 
-TEST_CASE("every form of normal parses; those photon cannot evaluate are ignored", "[dsl][degradation]") {
+TEST_CASE("every form of normal parses, and those photon cannot evaluate are ignored", "[dsl][degradation]") {
     const Parsed p = parse(std::string(lit) +
                            "#declare N = normal { wrinkles 0.3 scale 0.2 }\n"
                            "sphere { 0, 1 normal { N } }\n"
