@@ -258,6 +258,7 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
         if (p.metallic > 0 && (p.phong > 0 || p.blinn > 0)) std::cout << ", metallic " << p.metallic;
         if (p.brilliance != 1) std::cout << ", brilliance " << p.brilliance;
         if (p.ambient != photon::Rgb<float>(0)) std::cout << ", ambient " << rgb(p.ambient);
+        if (p.normal_field) std::cout << ", normal pattern (tilted shading normal)";
         std::cout << '\n';
     }
     std::cout << "settings   " << settings_line(b.settings) << '\n';

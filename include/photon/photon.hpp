@@ -41,6 +41,8 @@
 
 #include "texture/color_map.hpp"
 #include "texture/noise.hpp"
+#include "texture/normal_field.hpp"
+#include "texture/normal_pattern.hpp"
 #include "texture/pattern.hpp"
 #include "texture/pigment.hpp"
 #include "texture/reflectance_field.hpp"

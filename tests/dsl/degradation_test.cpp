@@ -194,7 +194,7 @@ TEST_CASE("patterned and layered textures become one texture", "[dsl][degradatio
     check_rgb(p.desc.objects[5].texture->pigment.color.rgb, 0.5, 0.5, 0.5);
     CHECK(places(p.warnings, "approximated texture") ==
           std::vector<std::string>{"3:64 texture", "4:25 checker", "5:25 gradient", "6:25 tiles", "7:25 material_map"});
-    CHECK(places(p.warnings, "ignored effect") == std::vector<std::string>{"8:43 normal"});
+    CHECK(places(p.warnings, "ignored effect").empty());  // photon renders the bumps
 }
 
 TEST_CASE("effects photon does not render are ignored with a warning", "[dsl][degradation]") {
@@ -238,22 +238,27 @@ TEST_CASE("camera types and lights photon lacks are approximated", "[dsl][degrad
     CHECK_THAT(error_of("camera { angle 360 }\nsphere { 0, 1 }"), Contains("camera `angle` must be between 0 and 180"));
 }
 
-TEST_CASE("every form of normal parses and is ignored", "[dsl][degradation]") {
+TEST_CASE("every form of normal parses, and those photon cannot evaluate are ignored", "[dsl][degradation]") {
     const Parsed p = parse(std::string(lit) +
                            "#declare N = normal { wrinkles 0.3 scale 0.2 }\n"
                            "sphere { 0, 1 normal { N } }\n"
                            "sphere { 0, 1 normal { bump_map { png \"b.png\" bump_size 2 } } }\n"
                            "sphere { 0, 1 normal { gradient x normal_map { [0 bumps 1] [1 granite 0.2] } } }\n"
                            "sphere { 0, 1 normal { facets coords 0.5 slope_map { [0 <0, 1>] } } }\n");
-    CHECK(places(p.warnings, "ignored effect").size() == 4);
+    INFO(all_messages(p.warnings));
+    CHECK(places(p.warnings, "ignored effect") ==
+          std::vector<std::string>{"5:24 normal", "6:24 normal", "7:24 normal"});  // bump_map, normal_map, facets
     CHECK(p.desc.objects.size() == 5);
+    REQUIRE(p.desc.objects[1].texture->normal);
+    CHECK(p.desc.objects[1].texture->normal->pattern->name == "wrinkles");
+    CHECK(p.desc.objects[1].texture->normal->amount == 0.3);
 }
 
 TEST_CASE("photon's own warnings about what it renders differently carry a kind", "[dsl][degradation]") {
     // Every warning of these constructs has its kind and keyword for the summary of `photon check`.
     const Parsed b = parse(std::string(lit) +
                            "fog { distance 1 } superellipsoid { <1, 1> } sphere { 0, 1 pigment { crackle } "
-                           "normal { bumps 1 } }\n");
+                           "normal { crackle 1 } }\n");
     INFO(all_messages(b.warnings));
     REQUIRE(b.warnings.size() == 4);
     for (const auto& w : b.warnings) {

@@ -111,7 +111,7 @@ TEMPLATE_TEST_CASE("direct light with every finish term is POV-Ray's sum of them
     const Vec3<S> x{1, 0, 0}, n{0, 1, 0};
     const Vec3<S> wo = glm::normalize(Vec3<S>{-1, 1, 0});
     ShadingContext ctx;
-    const Rgb<S> l = direct_lighting(scene, x, Vec3<S>(1, S(1e-4), 0), n, wo, m, m.diffuse(), 1, ctx);
+    const Rgb<S> l = direct_lighting(scene, x, Vec3<S>(1, S(1e-4), 0), n, n, wo, m, m.diffuse(), 1, ctx);
 
     // POV-Ray: colour * (diffuse * pigment * cos^brilliance + specular * cos(h)^(1/roughness) * tint),
     // where photon's irradiance E is pi * colour.

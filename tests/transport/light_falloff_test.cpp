@@ -212,7 +212,7 @@ TEMPLATE_TEST_CASE("shadowless: direct light through occluders, photons still bl
     ShadingContext ctx;
     const Vec3<S> x{0, 0, 0}, n{0, 1, 0};
     const Material<S> m = Material<S>::lambertian(Rgb<S>(S(0.5)));
-    const Rgb<S> l = direct_lighting(scene, x, Vec3<S>(0, S(1e-4), 0), n, n, m, Rgb<S>(S(0.5)), 1, ctx);
+    const Rgb<S> l = direct_lighting(scene, x, Vec3<S>(0, S(1e-4), 0), n, n, n, m, Rgb<S>(S(0.5)), 1, ctx);
     CHECK(double(l.x) == Approx(0.5 / pi_d * 1.0).epsilon(1e-5));  // I / d^2 = 1, unshadowed
     CHECK(ctx.rays.shadow == 0);
 }

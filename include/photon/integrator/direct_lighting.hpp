@@ -25,8 +25,10 @@ namespace photon {
     return n == 0 ? 1 : n;
 }
 
-/// Radiance reflected towards `wo` at the surface point `x` with unit normal `n` on the shaded
-/// side, from every light, by shadow rays leaving from `shadow_origin` (x offset off the surface).
+/// Radiance reflected towards `wo` at the surface point `x` with unit shading normal `n` on the
+/// shaded side (a normal field's tilt, else the geometric normal), from every light, by shadow
+/// rays leaving from `shadow_origin` (x offset off the surface); light from below the geometric
+/// surface (unit normal `geometric_n`, same side) counts for nothing.
 /// `albedo` is the material's diffuse reflectance at x (material.diffuse_at(x)), read once by the
 /// caller, which needs it too. Callers shade only points the camera sees (directly or through
 /// mirrors and glass): the highlights and brilliance apply there only.
@@ -38,7 +40,8 @@ namespace photon {
 /// would all add zero. Empty: every light is sampled.
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
-                                     const Vec3<S>& n, const Vec3<S>& wo, const Material<S>& material,
+                                     const Vec3<S>& n, const Vec3<S>& geometric_n, const Vec3<S>& wo,
+                                     const Material<S>& material,
                                      const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {}) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = albedo * inv_pi<S>;
@@ -75,6 +78,7 @@ template <class SceneT, Scalar S>
             if (!incident) continue;
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0))) continue;
+            if (!(glm::dot(geometric_n, incident->direction) > S(0))) continue;
             if (shadows) {
                 ++ctx.rays.shadow;
                 const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};

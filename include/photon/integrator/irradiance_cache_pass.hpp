@@ -58,11 +58,11 @@ template <class SceneT>
                 ++ctx.rays.camera;
                 const Ray<S> ray = camera.ray((S(px) + S(0.5)) / S(settings.width), (S(py) + S(0.5)) / S(settings.height));
                 auto& mine = found[i];
-                integrator.for_each_diffuse_hit(ray, 1, S(0), [&](const Vec3<S>& x, const Vec3<S>& n, S length) {
+                integrator.for_each_diffuse_hit(ray, 1, S(0), [&](const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& geometric_n, S length) {
                     const Vec3<float> xf(x), nf(n);
                     if (cache.interpolate(xf, nf, ctx.nearest)) return;
                     if (!mine.empty() && IrradianceCache(mine, error).interpolate(xf, nf, ctx.nearest)) return;
-                    const auto g = integrator.gather(x, n, settings.final_gather_rays, ctx);
+                    const auto g = integrator.gather(x, n, settings.final_gather_rays, ctx, geometric_n);
                     const S footprint = length * pixel_angle;
                     const S r = std::clamp(g.harmonic_distance, S(1.5) * footprint / S(error),
                                            S(24) * footprint / S(error));

@@ -64,28 +64,28 @@ public:
             if (arrival.kind != Arrival::unseen) result += throughput * lights_met(ray, surface, arrival, ctx);
             if (!surface) break;
             const Material<S>& material = *surface->material;
-            const Facing<S> f = facing(surface->hit.normal, ray.direction);
+            const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
             const Vec3<S>& x = surface->hit.point;
             const S error = intersection_error(x, ray.origin);
             // Russian roulette's probability of the diffuse event (its pd), the BSDF strategy's
             // share of the direct light here.
-            const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
+            const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);
             const S pd = material.has_diffuse() ? average(sc.diffuse) : S(0);
             // The camera sees x (through mirrors and glass at most): POV-Ray's ambient, highlights
             // and brilliance show here, and only here, as in radiance() and sppm's camera paths.
             const bool seen = arrival.kind == Arrival::unseen;
             if (seen) result += throughput * material.ambient_at(x);
             if (material.has_diffuse() || (seen && material.has_highlight()))  // a highlight needs no diffuse
-                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.normal, -ray.direction,
-                                                     material, sc.diffuse, pd, seen, ctx);
-            const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng);
+                result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.shading, f.normal,
+                                                     -ray.direction, material, sc.diffuse, pd, seen, ctx);
+            const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng, PathFlow::from_camera);
             if (s.event == ScatterEvent::absorbed) break;
             throughput *= s.weight;
             // Brilliance makes the direct light here something no path samples: light sampling
             // alone counts it (weight 1), so the continuation gets no MIS share (density 0).
             if (s.event == ScatterEvent::diffuse)
                 arrival = {Arrival::diffuse, x,
-                           seen && material.has_brilliance() ? S(0) : pd * glm::dot(f.normal, s.direction) * inv_pi<S>};
+                           seen && material.has_brilliance() ? S(0) : pd * glm::dot(f.shading, s.direction) * inv_pi<S>};
             else if (arrival.kind != Arrival::unseen)
                 arrival.kind = Arrival::specular;
             const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
@@ -108,14 +108,15 @@ private:
     };
 
     /// One light sample per light at a diffuse vertex x (shadow rays from `shadow_origin`),
-    /// reflected towards wo. The Lambertian part is weighted against the BSDF strategy, whose
-    /// density is pd cos / pi. Where the camera sees x (`seen`), POV-Ray's highlights and
-    /// brilliance apply (highlight.hpp), with weight 1, as no path samples them (they are
-    /// direct light only, as in pm's direct_lighting, which this matches); elsewhere x is
-    /// Lambertian, as gathers and photons see it.
+    /// reflected towards wo; n is the shading normal, geometric_n the geometric one (light from
+    /// below the surface counts for nothing). The Lambertian part is weighted against the BSDF
+    /// strategy, whose density is pd cos / pi. Where the camera sees x (`seen`), POV-Ray's
+    /// highlights and brilliance apply (highlight.hpp), with weight 1, as no path samples them
+    /// (they are direct light only, as in pm's direct_lighting, which this matches); elsewhere x
+    /// is Lambertian, as gathers and photons see it.
     [[nodiscard]] Rgb<S> sample_lights(const Vec3<S>& x, const Vec3<S>& shadow_origin, const Vec3<S>& n,
-                                       const Vec3<S>& wo, const Material<S>& material, const Rgb<S>& albedo, S pd,
-                                       bool seen, ShadingContext& ctx) const {
+                                       const Vec3<S>& geometric_n, const Vec3<S>& wo, const Material<S>& material,
+                                       const Rgb<S>& albedo, S pd, bool seen, ShadingContext& ctx) const {
         Rgb<S> total(S(0));
         const Rgb<S> brdf = albedo * inv_pi<S>;
         const bool highlights = seen && material.has_highlight();
@@ -125,7 +126,7 @@ private:
             const auto sample = sample_light(light, x, ctx.rng.uniform2<S>());
             if (!sample) continue;
             const S cos_theta = glm::dot(n, sample->direction);
-            if (!(cos_theta > S(0))) continue;
+            if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, sample->direction) > S(0))) continue;
             if (light_casts_shadows(light)) {
                 ++ctx.rays.shadow;
                 if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;

@@ -37,7 +37,7 @@ public:
         const auto surface = scene_.intersect(ray);
         if (!surface) return Rgb<S>(S(0));
         const Material<S>& material = *surface->material;
-        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         Rgb<S> result = material.ambient_at(x);  // seen by camera, mirror and glass rays, not by gathers
@@ -49,16 +49,16 @@ public:
             const Rgb<S> brdf = albedo * inv_pi<S>;
             switch (settings_.mode) {
             case RenderMode::rt:
-                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, albedo,
+                result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
                                           settings_.shadow_samples, ctx, lights_reaching_);
                 break;
             case RenderMode::pm:
-                result += direct_lighting(scene_, x, above, f.normal, -ray.direction, material, albedo,
+                result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
                                           settings_.shadow_samples, ctx, lights_reaching_);
                 if (!material.has_diffuse()) break;
                 result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
-                                      ? final_gather(above, f.normal, ctx)
+                                      ? final_gather(above, f.shading, f.normal, ctx)
                                       : map_irradiance(maps_.global, settings_.global_estimate, above, f.normal, ctx));
                 break;
             case RenderMode::pm_direct:
@@ -82,11 +82,11 @@ private:
                                   unsigned depth, ShadingContext& ctx, bool gathering) const {
         const Material<S>& material = *surface.material;
         const Vec3<S>& x = surface.hit.point;
-        const Scattering<S> s = material.scattering(x, f.cos_i, f.entering);
+        const Scattering<S> s = material.scattering(x, f.shading_cos, f.entering);
         Rgb<S> result(S(0));
         Rgb<S> reflected_weight = s.specular;
         if (!is_black(s.transmission)) {
-            if (const auto refracted = refract(ray.direction, f.normal, relative_eta(material, f.entering))) {
+            if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering))) {
                 if (gathering) ++ctx.rays.gather; else ++ctx.rays.refraction;
                 const Ray<S> next{offset_origin(x, -f.normal, error), *refracted};
                 result += s.transmission * trace(next, depth + 1, ctx, gathering);
@@ -96,7 +96,7 @@ private:
         }
         if (!is_black(reflected_weight)) {
             if (gathering) ++ctx.rays.gather; else ++ctx.rays.reflection;
-            const Ray<S> next{offset_origin(x, f.normal, error), reflect(ray.direction, f.normal)};
+            const Ray<S> next{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)};
             result += reflected_weight * trace(next, depth + 1, ctx, gathering);
         }
         return result;
@@ -123,12 +123,13 @@ private:
     }
 
     /// Indirect irradiance at x by final gathering (through the irradiance cache when there is one
-    /// and it covers x).
-    [[nodiscard]] Rgb<S> final_gather(const Vec3<S>& x, const Vec3<S>& n, ShadingContext& ctx) const {
+    /// and it covers x), for shading normal n over geometric normal geometric_n.
+    [[nodiscard]] Rgb<S> final_gather(const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& geometric_n,
+                                      ShadingContext& ctx) const {
         if (maps_.irradiance_cache)
             if (const auto e = maps_.irradiance_cache->interpolate(Vec3<float>(x), Vec3<float>(n), ctx.nearest))
                 return Rgb<S>(*e);
-        return gather(x, n, settings_.final_gather_rays, ctx).irradiance;
+        return gather(x, n, settings_.final_gather_rays, ctx, geometric_n).irradiance;
     }
 
 public:
@@ -137,10 +138,13 @@ public:
         S harmonic_distance;  ///< harmonic mean of the distances the rays travelled (inf: none hit)
     };
 
-    /// Final gathering at x (already offset) with unit normal n: `rays` cosine-distributed,
+    /// Final gathering at x (already offset) with unit shading normal n: `rays` cosine-distributed,
     /// stratified rays whose hits are read from the global map, or its precomputed irradiance.
-    /// E = pi * mean L.
-    [[nodiscard]] Gathered gather(const Vec3<S>& x, const Vec3<S>& n, unsigned rays, ShadingContext& ctx) const {
+    /// E = pi * mean L. Under a tilted shading normal (geometric_n differs from n), the rays
+    /// that would enter the surface bring nothing, as the path tracer's do.
+    [[nodiscard]] Gathered gather(const Vec3<S>& x, const Vec3<S>& n, unsigned rays, ShadingContext& ctx,
+                                  std::optional<Vec3<S>> geometric_n = std::nullopt) const {
+        if (geometric_n && *geometric_n == n) geometric_n.reset();
         const unsigned grid = strata_per_axis(rays);
         const unsigned count = grid * grid;
         const Frame<S> frame = Frame<S>::from_normal(n);
@@ -148,6 +152,7 @@ public:
         S inverse_distances = 0;
         for (unsigned i = 0; i < count; ++i) {
             const Vec3<S> dir = frame.to_world(cosine_hemisphere(stratified(i, grid, ctx.rng.uniform2<S>())));
+            if (geometric_n && !(glm::dot(*geometric_n, dir) > S(0))) continue;
             ++ctx.rays.gather;
             S distance = std::numeric_limits<S>::infinity();
             sum += gathered_radiance(Ray<S>{x, dir}, 1, ctx, &distance);
@@ -157,29 +162,29 @@ public:
                 inverse_distances > S(0) ? S(count) / inverse_distances : std::numeric_limits<S>::infinity()};
     }
 
-    /// Calls visit(x, n, path_length) for every diffuse hit of the camera ray and of the mirror
+    /// Calls visit(x, n, geometric_n, path_length) for every diffuse hit of the camera ray and of the mirror
     /// and glass rays it spawns (as radiance() would shade them), with x already offset.
     template <class Visit>
     void for_each_diffuse_hit(const Ray<S>& ray, unsigned depth, S path_length, Visit&& visit) const {
         const auto surface = scene_.intersect(ray);
         if (!surface) return;
         const Material<S>& material = *surface->material;
-        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         const S length = path_length + surface->hit.t;
-        if (material.has_diffuse()) visit(offset_origin(x, f.normal, error), f.normal, length);
+        if (material.has_diffuse()) visit(offset_origin(x, f.normal, error), f.shading, f.normal, length);
         if (depth >= settings_.max_ray_depth || !material.is_specular()) return;
-        const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
+        const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);
         bool reflect_too = !is_black(sc.specular);
         if (!is_black(sc.transmission)) {
-            if (const auto refracted = refract(ray.direction, f.normal, relative_eta(material, f.entering)))
+            if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering)))
                 for_each_diffuse_hit(Ray<S>{offset_origin(x, -f.normal, error), *refracted}, depth + 1, length, visit);
             else
                 reflect_too = true;
         }
         if (reflect_too)
-            for_each_diffuse_hit(Ray<S>{offset_origin(x, f.normal, error), reflect(ray.direction, f.normal)}, depth + 1,
+            for_each_diffuse_hit(Ray<S>{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)}, depth + 1,
                                  length, visit);
     }
 
@@ -193,7 +198,7 @@ private:
         if (!surface) return Rgb<S>(S(0));
         if (distance) *distance = surface->hit.t;
         const Material<S>& material = *surface->material;
-        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         const S error = intersection_error(surface->hit.point, ray.origin);
         Rgb<S> result(S(0));
         if (material.has_diffuse()) {

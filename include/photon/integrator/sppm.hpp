@@ -138,10 +138,11 @@ template <class SceneT>
                     if (!surface) break;
                     if (depth == 0) power *= first_hit_scale(lights[l], surface->hit.point);  // the light's falloff
                     const Material<S>& material = *surface->material;
-                    const Facing<S> f = facing(surface->hit.normal, ray.direction);
+                    const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
                     // Depth 0 is direct light, which the shadow rays of the camera pass cover.
                     if (depth > 0 && material.has_diffuse())
-                        block.hits.push_back({Vec3<float>(surface->hit.point), Rgb<float>(power), Vec3<float>(f.normal)});
+                        block.hits.push_back({Vec3<float>(surface->hit.point), Rgb<float>(power * shading_ratio(f)),
+                                               Vec3<float>(f.normal)});
                     const PhotonScatter<S> s = russian_roulette(material, surface->hit.point, f, ray.direction, rng);
                     if (s.event == ScatterEvent::absorbed) break;
                     power *= s.weight;

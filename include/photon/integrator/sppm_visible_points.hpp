@@ -71,17 +71,17 @@ template <class SceneT>
         if (!surface) return path;
         length += surface->hit.t;
         const Material<S>& material = *surface->material;
-        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing
         if (material.has_diffuse() || material.has_highlight()) {  // as radiance(): a highlight needs no diffuse
             const Vec3<S> above = offset_origin(x, f.normal, error);
-            path.direct += throughput * direct_lighting(scene, x, above, f.normal, -ray.direction, material,
+            path.direct += throughput * direct_lighting(scene, x, above, f.shading, f.normal, -ray.direction, material,
                                                         material.diffuse_at(x), settings.shadow_samples, ctx);
         }
         const bool continues = depth < settings.max_ray_depth && material.is_specular();
-        const Scattering<S> sc = material.scattering(x, f.cos_i, f.entering);
+        const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);
         const S pd = material.has_diffuse() ? average(sc.diffuse) : S(0);
         const S ps = continues ? average(sc.specular) : S(0);
         const S pt = continues ? average(sc.transmission) : S(0);
@@ -95,16 +95,16 @@ template <class SceneT>
         if (psi < pd + ps || pt == S(0)) {
             throughput *= sc.specular * (total / ps);
             ++ctx.rays.reflection;
-            ray = Ray<S>{offset_origin(x, f.normal, error), reflect(ray.direction, f.normal)};
+            ray = Ray<S>{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)};
             continue;
         }
         throughput *= sc.transmission * (total / pt);
-        if (const auto refracted = refract(ray.direction, f.normal, relative_eta(material, f.entering))) {
+        if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering))) {
             ++ctx.rays.refraction;
             ray = Ray<S>{offset_origin(x, -f.normal, error), *refracted};
         } else {  // total internal reflection: the transmitted share is reflected, as radiance() does
             ++ctx.rays.reflection;
-            ray = Ray<S>{offset_origin(x, f.normal, error), reflect(ray.direction, f.normal)};
+            ray = Ray<S>{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)};
         }
     }
 }

@@ -6,7 +6,8 @@
 // glass) shows: Phong and Blinn highlights, metallic tint, brilliance, and a constant ambient
 // radiance; none of them carries light further (highlight.hpp says why). Glass splits its transmission into reflection and refraction by the
 // Fresnel equations, with total internal reflection. The diffuse reflectance may vary over the
-// surface (a texture): it is then evaluated at each hit point, by every pass alike.
+// surface (a texture): it is then evaluated at each hit point, by every pass alike. So may the
+// shading normal (a bump pattern, POV-Ray's `normal`): scatter.hpp's facing() tilts it.
 
 #include <cmath>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include <string>
 
 #include "../math/vec.hpp"
+#include "../texture/normal_field.hpp"
 #include "../texture/reflectance_field.hpp"
 #include "fresnel.hpp"
 
@@ -44,6 +46,8 @@ template <Scalar S> struct MaterialParams {
     Rgb<S> ambient{S(0)};
     /// Optional texture: the albedo at point p is then diffuse * diffuse_texture(p).
     AnyReflectanceField<S> diffuse_texture{};
+    /// Optional bumps: the shading normal at p is normal_field(p, geometric normal).
+    AnyNormalField<S> normal_field{};
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -104,6 +108,15 @@ public:
     [[nodiscard]] bool has_highlight() const noexcept { return params_.phong > S(0) || params_.blinn > S(0); }
     /// True when direct light's diffuse term is not Lambertian (brilliance other than 1).
     [[nodiscard]] bool has_brilliance() const noexcept { return params_.brilliance != S(1); }
+    /// Whether a normal field tilts this surface's shading normal.
+    [[nodiscard]] bool has_normal_field() const noexcept { return bool(params_.normal_field); }
+    /// The unit shading normal at `p` for the unit outward geometric normal `n` (n itself
+    /// without a normal field), before facing() turns it to a ray's side and guards it.
+    [[nodiscard]] Vec3<S> shading_normal(const Vec3<S>& p, const Vec3<S>& n) const {
+        if (!params_.normal_field) [[likely]]
+            return n;
+        return params_.normal_field(p, n);
+    }
     [[nodiscard]] S ior() const noexcept { return params_.ior; }
     [[nodiscard]] bool has_diffuse() const noexcept { return has_diffuse_; }
     /// True when the surface can reflect or refract specularly (it can form caustics).

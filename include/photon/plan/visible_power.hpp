@@ -84,7 +84,7 @@ template <class SceneT>
                     seen += weight;
                     break;
                 }
-                const Facing<S> f = facing(surface->hit.normal, ray.direction);
+                const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
                 const PhotonScatter<S> s = russian_roulette(material, surface->hit.point, f, ray.direction, rng);
                 if (s.event == ScatterEvent::absorbed) break;
                 weight *= double(average(s.weight));

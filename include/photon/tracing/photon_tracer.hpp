@@ -172,7 +172,7 @@ void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, R
         if (!surface) return;
         if (depth == 0) power *= first_hit_scale(light, surface->hit.point);
         const Material<S>& material = *surface->material;
-        const Facing<S> f = facing(surface->hit.normal, ray.direction);
+        const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         if (caustic_only && depth == 0 && !material.is_specular()) return;
         if (material.has_diffuse()) {
             const PathKind kind = depth == 0 ? PathKind::direct : (specular_only ? PathKind::caustic : PathKind::indirect);
@@ -182,8 +182,10 @@ void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, R
             // normal, and on a curved shell a photon travelling nearly tangentially on the
             // inside has a travel direction that faces the outside's normal a few centimetres
             // away (a light inside a closed sphere lit its outside at 0.45 W/m^2/sr).
+            // Under a normal field the stored power is the photon's share of the irradiance the
+            // shading normal sees (shading_ratio), so density estimates need no direction.
             const Photon photon{Vec3<float>(surface->hit.point),
-                                PackedPhoton(Rgb<float>(power), Vec3<float>(-f.normal), kind)};
+                                PackedPhoton(Rgb<float>(power * shading_ratio(f)), Vec3<float>(-f.normal), kind)};
             if (keep) {
                 block.photons.push_back(photon);
                 if (settings.keep_normals) block.normals.push_back(encode_octahedral(Vec3<float>(f.normal)));

@@ -123,6 +123,20 @@ struct PigmentPattern {
     friend bool operator==(const PigmentPattern&, const PigmentPattern&) = default;
 };
 
+/// The patterns a `normal` tilts by a formula of its own (POV-Ray's normal-only patterns; ripples
+/// and waves, also pigments, have a normal formula too); any of evaluated_patterns tilts by its slope.
+inline constexpr std::string_view normal_patterns[] = {"bumps", "dents", "ripples", "waves", "wrinkles"};
+
+/// `normal { PATTERN [AMOUNT] MODIFIERS }` as photon evaluates it: the pattern with its modifiers
+/// (`colors` unused), its bump size and accuracy, and its placement, composed like a pigment's.
+struct Normal {
+    std::shared_ptr<const PigmentPattern> pattern;  ///< name: one of normal_patterns or evaluated_patterns
+    double amount = 0.5;                            ///< the number after the pattern, or `bump_size`
+    double accuracy = 0.02;                         ///< `accuracy` (a slope's tetrahedron size)
+    Transform transform;                            ///< pattern space to the object's parent's space
+    SourceLocation at;
+};
+
 struct Pigment {
     Color color;  ///< POV-Ray's default pigment is black; a patterned pigment's average colour
     /// The pattern photon evaluates at each point; null for one colour everywhere.
@@ -167,6 +181,7 @@ struct Interior {
 struct Texture {
     Pigment pigment;
     Finish finish;
+    std::optional<Normal> normal;  ///< none: the geometric normal shades
     std::map<std::string, SourceLocation> ignored;  ///< parts photon does not render (normal, ...)
     SourceLocation at;
 };

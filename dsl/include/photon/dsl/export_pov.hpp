@@ -161,7 +161,6 @@ private:
     /// An evaluated pattern with every modifier that differs from POV-Ray's default, its colours
     /// and its transformation.
     void pigment_pattern(const PigmentPattern& p, const Transform& placement) {
-        static const PigmentPattern pov;
         out_ << "pigment { " << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
         if (p.name == "checker") {
@@ -171,6 +170,14 @@ private:
             for (const auto& [v, c] : p.colors) out_ << " [" << num(v) << ' ' << rgbft(c) << ']';
             out_ << " }";
         }
+        pattern_modifiers(p);
+        placement_matrix(placement);
+        out_ << " }\n";
+    }
+
+    /// The modifiers of an evaluated pattern that differ from POV-Ray's defaults.
+    void pattern_modifiers(const PigmentPattern& p) {
+        static const PigmentPattern pov;
         if (p.turbulence != pov.turbulence) out_ << " turbulence " << vec(p.turbulence);
         if (p.octaves != pov.octaves) out_ << " octaves " << p.octaves;
         if (p.omega != pov.omega) out_ << " omega " << num(p.omega);
@@ -181,12 +188,25 @@ private:
         if (p.phase != pov.phase) out_ << " phase " << num(p.phase);
         if (!p.wave.empty()) out_ << ' ' << p.wave;
         if (p.wave == "poly_wave") out_ << ' ' << num(p.exponent);
-        if (!placement.is_identity()) {
-            const auto m = placement.pov_matrix();
-            out_ << " matrix <";
-            for (std::size_t i = 0; i < 12; ++i) out_ << (i ? ", " : "") << num(m[i]);
-            out_ << '>';
-        }
+    }
+
+    void placement_matrix(const Transform& placement) {
+        if (placement.is_identity()) return;
+        const auto m = placement.pov_matrix();
+        out_ << " matrix <";
+        for (std::size_t i = 0; i < 12; ++i) out_ << (i ? ", " : "") << num(m[i]);
+        out_ << '>';
+    }
+
+    /// A normal photon evaluates: its pattern, bump size, modifiers, accuracy and transformation.
+    void normal(const Normal& n) {
+        const PigmentPattern& p = *n.pattern;
+        out_ << "normal { " << p.name;
+        if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
+        out_ << " bump_size " << num(n.amount);
+        pattern_modifiers(p);
+        if (n.accuracy != Normal{}.accuracy) out_ << " accuracy " << num(n.accuracy);
+        placement_matrix(n.transform);
         out_ << " }\n";
     }
 
@@ -201,6 +221,10 @@ private:
             pigment_pattern(*t.pigment.pattern, t.pigment.transform);
         else
             out_ << "pigment { " << rgbft(c) << " }\n";
+        if (t.normal && t.normal->pattern) {
+            indent(level + 1);
+            normal(*t.normal);
+        }
         indent(level + 1);
         out_ << "finish {";
         if (f.ambient != pov.ambient) out_ << " ambient rgb " << vec(f.ambient);

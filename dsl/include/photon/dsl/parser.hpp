@@ -58,6 +58,7 @@ namespace photon::dsl {
 #include "parser/degradation.hpp"
 #include "parser/patterns.hpp"
 #include "parser/materials.hpp"
+#include "parser/normals.hpp"
 #include "parser/objects.hpp"
 #include "parser/mesh2.hpp"
 #include "parser/quadrics.hpp"

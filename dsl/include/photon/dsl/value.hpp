@@ -115,7 +115,7 @@ struct Array {
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
                                CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
-                               BlendMap, IgnoredBlock>;
+                               BlendMap, IgnoredBlock, Normal>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -164,8 +164,10 @@ struct Value {
             return "a function";
         case 13:
             return "a " + std::get<BlendMap>(v).keyword;
-        default:
+        case 14:
             return "a " + std::get<IgnoredBlock>(v).keyword;
+        default:
+            return "a normal";
     }
 }
 

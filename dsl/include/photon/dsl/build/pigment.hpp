@@ -40,8 +40,8 @@ namespace photon::dsl {
     return m;
 }
 
-[[nodiscard]] inline Pattern library_pattern(const PigmentPattern& p) {
-    Pattern out = Pattern::of(pattern_kind(p.name));
+/// The pattern's modifiers (gradient, turbulence, noise, wave) written onto `out`.
+[[nodiscard]] inline Pattern with_modifiers(Pattern out, const PigmentPattern& p) {
     out.gradient = p.gradient;
     out.agate_turb = p.agate_turb;
     out.turbulence = p.turbulence;
@@ -57,6 +57,10 @@ namespace photon::dsl {
     for (const auto& [n, w] : waves)
         if (p.wave == n) out.wave.type = w;
     return out;
+}
+
+[[nodiscard]] inline Pattern library_pattern(const PigmentPattern& p) {
+    return with_modifiers(Pattern::of(pattern_kind(p.name)), p);
 }
 
 /// The pigment's pattern as a library Pigment whose colours are albedos; `placement` maps the

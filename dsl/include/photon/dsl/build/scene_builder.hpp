@@ -24,6 +24,7 @@
 #include "../mesh_files.hpp"
 #include "lights.hpp"
 #include "material.hpp"
+#include "normal.hpp"
 #include "warnings.hpp"
 
 namespace photon::dsl::detail {
@@ -105,6 +106,7 @@ private:
         bool no_shadow = false;
         Transform transform;
         Transform texture_placement;  ///< the texture's pattern space to the world
+        Transform normal_placement;   ///< its normal's pattern space to the world
     };
 
     static Inherited inherit(const Object& o, const Inherited& parent) {
@@ -116,9 +118,15 @@ private:
                                     : parent.texture ? parent.texture_placement
                                     : o.default_texture ? o.default_texture->pigment.transform
                                                         : Transform{};
+        // The normal's placement is composed as the pigment's is.
+        const auto normal_transform = [](const Texture& t) { return t.normal ? t.normal->transform : Transform{}; };
+        const Transform normal_placement = o.texture ? normal_transform(*o.texture).then(parent.transform)
+                                           : parent.texture ? parent.normal_placement
+                                           : o.default_texture ? normal_transform(*o.default_texture)
+                                                               : Transform{};
         return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                 o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                o.transform.then(parent.transform), placement};
+                o.transform.then(parent.transform), placement, normal_placement};
     }
 
     void add(const Object& o, const Inherited& parent) {
@@ -436,13 +444,19 @@ private:
         MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, desc_.version, warn_, o.at);
         const PigmentPattern* pattern = tex.pigment.pattern.get();
         const Transform placement = pattern ? in.texture_placement : Transform{};
+        const Normal* normal = tex.normal && tex.normal->pattern ? &*tex.normal : nullptr;
+        const MadeNormal made_normal = normal ? MadeNormal{normal->pattern.get(), normal->amount, normal->accuracy,
+                                                           in.normal_placement}
+                                              : MadeNormal{};
         for (const auto& m : materials_)
-            if (same(m.params, p) && m.pattern == pattern && m.placement == placement) return m.id;
+            if (same(m.params, p) && m.pattern == pattern && m.placement == placement && m.normal == made_normal)
+                return m.id;
         const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
         try {
             if (pattern) p.diffuse_texture = AnyReflectanceField<S>(library_pigment<S>(*pattern, placement));
+            if (normal) p.normal_field = AnyNormalField<S>(library_normal<S>(*normal, in.normal_placement));
             const MaterialId id = scene_->add_material(Material<S>(p));
-            materials_.push_back({p, pattern, placement, id});
+            materials_.push_back({p, pattern, placement, made_normal, id});
             return id;
         } catch (const std::invalid_argument& e) {
             throw Error(at, e.what());
@@ -459,10 +473,18 @@ private:
     const SceneDescription& desc_;
     Warnings& warn_;
     DefaultScene<S>* scene_ = nullptr;
+    /// What makes two materials' normals the same (pattern null: no normal).
+    struct MadeNormal {
+        const PigmentPattern* pattern = nullptr;
+        double amount = 0, accuracy = 0;
+        Transform placement;
+        friend bool operator==(const MadeNormal&, const MadeNormal&) = default;
+    };
     struct MadeMaterial {
         MaterialParams<S> params;
         const PigmentPattern* pattern;  ///< null: untextured
         Transform placement;
+        MadeNormal normal;
         MaterialId id;
     };
     std::vector<MadeMaterial> materials_;

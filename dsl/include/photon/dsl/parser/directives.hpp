@@ -238,6 +238,7 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     }
     if (w == "pigment") return parse_pigment(next(), Pigment{});
     if (w == "finish") return parse_finish(next(), Finish{});
+    if (w == "normal") return parse_normal(next(), Normal{});
     if (w == "interior") return parse_interior(next(), Interior{});
     if (w == "transform") return parse_transform_block(next());
     if (w == "camera") return parse_camera(next());
@@ -466,11 +467,9 @@ inline void Parser::directive_default(const Token& d) {
             default_texture_.pigment = parse_pigment(next(), default_texture_.pigment);
         else if (t.is_identifier("finish"))
             default_texture_.finish = parse_finish(next(), default_texture_.finish);
-        else if (t.is_identifier("normal")) {
-            const Token n = next();
-            skip_block(n);
-            degrade(n.location, degraded::ignored_effect, "normal", "`normal` is ignored: photon does not perturb normals");
-        } else
+        else if (t.is_identifier("normal"))
+            default_texture_.normal = parse_normal(next(), default_texture_.normal.value_or(Normal{}));
+        else
             break;
     }
     close_block(d, "`texture`, `pigment`, `finish` or `normal`", {"texture", "pigment", "finish", "normal"});

@@ -274,7 +274,7 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
         } else if (t.is_identifier("finish")) {
             tex.finish = parse_finish(next(), tex.finish);
         } else if (t.is_identifier("normal")) {
-            skip_effect(next());
+            tex.normal = parse_normal(next(), tex.normal.value_or(Normal{}));
         } else if (t.is_identifier("tiles")) {
             st.pattern = next();
             const Nest nest(*this, t.location);
@@ -303,7 +303,11 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
                 if (!st.finish) st.finish = x.finish;
             }
             close_block(t, "a `texture`");
-        } else if (parse_pattern_item(st) || try_transform(tex.pigment.transform)) {
+        } else if (Transform step; try_transform(step)) {
+            // The texture's transformations move its pigment and its normal alike.
+            tex.pigment.transform = tex.pigment.transform.then(step);
+            if (tex.normal) tex.normal->transform = tex.normal->transform.then(step);
+        } else if (parse_pattern_item(st)) {
             continue;
         } else {
             break;

@@ -245,6 +245,8 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
             // POV-Ray moves the texture already given with the object, not one given after.
             obj.transform = obj.transform.then(step);
             if (obj.texture) obj.texture->pigment.transform = obj.texture->pigment.transform.then(step);
+            if (obj.texture && obj.texture->normal)
+                obj.texture->normal->transform = obj.texture->normal->transform.then(step);
             continue;
         }
         const std::string& w = t.text;
@@ -269,7 +271,8 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
             tex.finish = parse_finish(next(), tex.finish);
             if (!tex.at.known()) tex.at = t.location;
         } else if (w == "normal") {
-            skip_effect(next());
+            Texture& tex = ensure_texture(obj);
+            tex.normal = parse_normal(next(), tex.normal.value_or(Normal{}));
         } else if (w == "interior") {
             obj.interior = parse_interior(next(), obj.interior.value_or(Interior{}));
         } else if (w == "material") {

@@ -337,6 +337,8 @@ private:
     Color pattern_average(const PatternState& st, const Color& fallback, std::string& how);
     std::shared_ptr<const PigmentPattern> evaluated_pattern(const PatternState& st, std::string& why_not) const;
     static bool modifies_pattern(const PatternState& st);
+    static void apply_pattern_modifiers(const PatternState& st, PigmentPattern& p);
+    Normal parse_normal(const Token& kw, Normal n);
 
     // lights_camera.hpp
     Object parse_light(const Token& kw);

@@ -51,6 +51,16 @@ inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const Pat
     } else if (!st.base || st.base->name != name) {
         p.colors = default_color_map(name);
     }
+    apply_pattern_modifiers(st, p);
+    if (p.noise_generator < 0 || p.noise_generator > 3) {
+        why_not = "`noise_generator " + std::to_string(p.noise_generator) + "` is not 1, 2 or 3";
+        return nullptr;
+    }
+    return std::make_shared<const PigmentPattern>(std::move(p));
+}
+
+/// The modifiers written in `st` (gradient, turbulence, octaves, ..., the wave) onto `p`.
+inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPattern& p) {
     if (st.gradient) p.gradient = *st.gradient;
     if (st.turbulence) p.turbulence = *st.turbulence;
     if (st.octaves) p.octaves = *st.octaves;
@@ -63,11 +73,6 @@ inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const Pat
     if (st.exponent) p.exponent = *st.exponent;
     if (!st.wave.empty()) p.wave = st.wave;
     p.octaves = std::clamp(p.octaves, 1, 10);  // as POV-Ray's parser clamps it
-    if (p.noise_generator < 0 || p.noise_generator > 3) {
-        why_not = "`noise_generator " + std::to_string(p.noise_generator) + "` is not 1, 2 or 3";
-        return nullptr;
-    }
-    return std::make_shared<const PigmentPattern>(std::move(p));
 }
 
 /// Whether the body wrote any pattern modifier or map (to a declared pigment's pattern).
