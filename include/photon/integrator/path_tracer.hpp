@@ -65,6 +65,7 @@ public:
             if (!surface) break;
             const Material<S>& material = *surface->material;
             const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
+            throughput *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
             const Vec3<S>& x = surface->hit.point;
             const S error = intersection_error(x, ray.origin);
             // Russian roulette's probability of the diffuse event (its pd), the BSDF strategy's

@@ -5,6 +5,7 @@
 // caustic map, indirect light from the global map, read directly or through final gathering
 // (Figure 2). Mirror and glass recurse up to the maximum ray depth. A material's ambient
 // radiance is added where camera, mirror and glass rays meet it; gather rays do not see it.
+// What arrives along a ray that ran inside absorbing glass is scaled by its transmittance.
 
 #include <limits>
 #include <optional>
@@ -72,7 +73,7 @@ public:
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, false);
-        return result;
+        return result * segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
     }
 
 private:
@@ -211,7 +212,7 @@ private:
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, true);
-        return result;
+        return result * segment_transmittance(material, f, surface->hit.t);
     }
 
     /// Precomputed irradiance at a gather hit: the nearest sample on the same surface that x can

@@ -139,6 +139,7 @@ template <class SceneT>
                     if (depth == 0) power *= first_hit_scale(lights[l], surface->hit.point);  // the light's falloff
                     const Material<S>& material = *surface->material;
                     const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
+                    power *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
                     // Depth 0 is direct light, which the shadow rays of the camera pass cover.
                     if (depth > 0 && material.has_diffuse())
                         block.hits.push_back({Vec3<float>(surface->hit.point), Rgb<float>(power * shading_ratio(f)),

@@ -72,6 +72,7 @@ template <class SceneT>
         length += surface->hit.t;
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
+        throughput *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing

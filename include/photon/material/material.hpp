@@ -7,7 +7,8 @@
 // radiance; none of them carries light further (highlight.hpp says why). Glass splits its transmission into reflection and refraction by the
 // Fresnel equations, with total internal reflection. The diffuse reflectance may vary over the
 // surface (a texture): it is then evaluated at each hit point, by every pass alike. So may the
-// shading normal (a bump pattern, POV-Ray's `normal`): scatter.hpp's facing() tilts it.
+// shading normal (a bump pattern, POV-Ray's `normal`): scatter.hpp's facing() tilts it. A
+// transmitting surface may absorb inside (coloured glass, absorption.hpp).
 
 #include <cmath>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include "../math/vec.hpp"
 #include "../texture/normal_field.hpp"
 #include "../texture/reflectance_field.hpp"
+#include "absorption.hpp"
 #include "fresnel.hpp"
 
 namespace photon {
@@ -48,6 +50,8 @@ template <Scalar S> struct MaterialParams {
     AnyReflectanceField<S> diffuse_texture{};
     /// Optional bumps: the shading normal at p is normal_field(p, geometric normal).
     AnyNormalField<S> normal_field{};
+    /// What light loses per straight segment it travels inside the surface (clear by default).
+    Absorption<S> absorption{};
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -118,6 +122,8 @@ public:
         return params_.normal_field(p, n);
     }
     [[nodiscard]] S ior() const noexcept { return params_.ior; }
+    /// Whether light travelling inside the surface is absorbed.
+    [[nodiscard]] bool absorbs() const noexcept { return params_.absorption.absorbs(); }
     [[nodiscard]] bool has_diffuse() const noexcept { return has_diffuse_; }
     /// True when the surface can reflect or refract specularly (it can form caustics).
     [[nodiscard]] bool is_specular() const noexcept {

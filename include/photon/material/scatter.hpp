@@ -114,6 +114,19 @@ template <Scalar S> [[nodiscard]] S shading_ratio(const Facing<S>& f) noexcept {
     return std::min(std::max(f.shading_cos, S(0)) / f.cos_i, max_shading_ratio<S>);
 }
 
+/// The fraction of light per channel that survives the segment of length `t` a ray or photon
+/// travelled to reach the hit `f` on a surface of `material`: the material's absorption over t
+/// when the segment ends on the inside (it ran inside the object), else 1. Every pass calls it
+/// at every hit, so camera rays, photons, sppm paths and the path tracer absorb alike. Nested
+/// objects: a segment inside one absorbing object that ends on another object's outside is not
+/// absorbed (photon keeps no stack of the media a path is in).
+template <Scalar S>
+[[nodiscard]] Rgb<S> segment_transmittance(const Material<S>& material, const Facing<S>& f, S t) {
+    if (f.entering || !material.absorbs()) [[likely]]
+        return Rgb<S>(S(1));
+    return material.params().absorption.transmittance(t);
+}
+
 /// Ratio of the indices of refraction across the surface for a ray on side `entering`.
 template <Scalar S> [[nodiscard]] S relative_eta(const Material<S>& m, bool entering) noexcept {
     return entering ? S(1) / m.ior() : m.ior();

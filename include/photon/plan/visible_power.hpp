@@ -85,6 +85,7 @@ template <class SceneT>
                     break;
                 }
                 const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
+                weight *= double(average(segment_transmittance(material, f, surface->hit.t)));
                 const PhotonScatter<S> s = russian_roulette(material, surface->hit.point, f, ray.direction, rng);
                 if (s.event == ScatterEvent::absorbed) break;
                 weight *= double(average(s.weight));

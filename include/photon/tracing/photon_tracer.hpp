@@ -173,6 +173,9 @@ void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, R
         if (depth == 0) power *= first_hit_scale(light, surface->hit.point);
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
+        // The transmittance is carried exactly (no roulette on it): absorbing glass is usually
+        // pale, and a roulette would add noise to the tinted caustics for little gain.
+        power *= segment_transmittance(material, f, surface->hit.t);
         if (caustic_only && depth == 0 && !material.is_specular()) return;
         if (material.has_diffuse()) {
             const PathKind kind = depth == 0 ? PathKind::direct : (specular_only ? PathKind::caustic : PathKind::indirect);
