@@ -174,6 +174,9 @@ struct Finish {
 
 struct Interior {
     double ior = 1;
+    /// POV-Ray's absorption inside (library: Absorption::pov_fade); fade_distance 0 is clear.
+    double fade_distance = 0, fade_power = 0;
+    Vector3 fade_color{0.0};
     std::map<std::string, SourceLocation> written;
     SourceLocation at;
 };

@@ -263,7 +263,12 @@ private:
             texture(*o.default_texture, level);
         if (o.interior) {
             indent(level);
-            out_ << "interior { ior " << num(o.interior->ior) << " }\n";
+            const Interior& in = *o.interior;
+            out_ << "interior { ior " << num(in.ior);
+            if (in.fade_distance != 0) out_ << " fade_distance " << num(in.fade_distance);
+            if (in.fade_power != 0) out_ << " fade_power " << num(in.fade_power);
+            if (in.fade_color != Vector3(0.0)) out_ << " fade_color rgb " << vec(in.fade_color);
+            out_ << " }\n";
         }
         if (o.photons) {
             const ObjectPhotons& p = *o.photons;

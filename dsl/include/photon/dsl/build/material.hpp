@@ -16,6 +16,36 @@
 
 namespace photon::dsl {
 
+/// POV-Ray 3.7's interior fade as photon's absorption, exactly (Absorption::pov_fade). Values
+/// POV-Ray takes but that make light grow inside (a negative distance or power, a fade colour
+/// outside [0, 1]) are reported and brought into range.
+template <Scalar S> [[nodiscard]] Absorption<S> interior_absorption(const Interior& in, Warnings& warn) {
+    auto at = [&](const char* k) {
+        const auto it = in.written.find(k);
+        return it != in.written.end() ? it->second : in.at;
+    };
+    if (in.fade_distance == 0) return {};
+    if (in.fade_distance < 0) {
+        warn(at("fade_distance"),
+             "a negative `fade_distance` makes POV-Ray's glass brighten light inside; photon's glass stays clear",
+             "approximated interior", "fade_distance");
+        return {};
+    }
+    double power = in.fade_power;
+    if (power < 0) {
+        warn(at("fade_power"), "a negative `fade_power` is read as 0 (light loses half at any depth)",
+             "approximated interior", "fade_power");
+        power = 0;
+    }
+    const Vector3 color = glm::clamp(in.fade_color, Vector3(0.0), Vector3(1.0));
+    if (color != in.fade_color)
+        warn(at("fade_color"),
+             "`fade_color` rgb " + rgb_text(in.fade_color) + " outside [0, 1] would make light grow inside; photon uses rgb " +
+                 rgb_text(color),
+             "approximated interior", "fade_color");
+    return Absorption<S>::pov_fade(S(in.fade_distance), S(power), Rgb<S>(color));
+}
+
 /// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
 /// (1 - filter - transmit) (for a patterned pigment, `diffuse` alone: the pattern's colours,
 /// library_pigment, carry the rest); transmission = filter * pigment + transmit, from a patterned
@@ -163,6 +193,7 @@ template <Scalar S>
     p.highlight_color = pattern ? Rgb<S>(S(1)) : Rgb<S>(pc.rgb);  // a pattern's colours come from the texture
     p.brilliance = S(f.brilliance);
     p.ambient = Rgb<S>(pattern ? glow : glow * pc.rgb * opacity);
+    if (interior) p.absorption = interior_absorption<S>(*interior, warn);
     return p;
 }
 

@@ -215,6 +215,8 @@ inline Reflection Parser::parse_reflection(const Token& kw) {
     return r;
 }
 
+// INTERIOR: interior { [INTERIOR_IDENT] {ior F | fade_distance F | fade_power F | fade_color COLOR
+//                     | caustics F | dispersion F | dispersion_samples F | media {..}} }
 inline Interior Parser::parse_interior(const Token& kw, Interior in) {
     const Nest nest(*this, kw.location);
     open_block(kw);
@@ -228,18 +230,22 @@ inline Interior Parser::parse_interior(const Token& kw, Interior in) {
             in.ior = parse_float("the index of refraction after `ior`", &at);
             if (!(in.ior > 0)) fail(at, "ior must be positive, found " + format_number(in.ior));
             in.written["ior"] = t.location;
-        } else if (t.kind == TokenKind::identifier &&
-                   one_of(t.text, {"caustics", "dispersion", "dispersion_samples", "fade_distance", "fade_power"})) {
+        } else if (t.is_identifier("fade_distance") || t.is_identifier("fade_power")) {
+            next();
+            (t.text == "fade_distance" ? in.fade_distance : in.fade_power) = parse_float("`" + t.text + "`");
+            in.written[t.text] = t.location;
+        } else if (t.is_identifier("fade_color") || t.is_identifier("fade_colour")) {
+            next();
+            in.fade_color = parse_color("the fade colour").rgb;
+            in.written["fade_color"] = t.location;
+        } else if (t.kind == TokenKind::identifier && one_of(t.text, {"caustics", "dispersion", "dispersion_samples"})) {
             next();
             const double v = parse_float("`" + t.text + "`");
             if (v != 0 && !(t.text == "dispersion" && v == 1) && t.text != "dispersion_samples")
                 degrade(t.location, degraded::ignored_effect, t.text,
-                        "interior `" + t.text + "` is ignored: photon's glass is clear, with one ior");
-        } else if (t.is_identifier("fade_color") || t.is_identifier("fade_colour")) {
-            next();
-            parse_color("the fade colour");
-            degrade(t.location, degraded::ignored_effect, t.text,
-                    "interior `" + t.text + "` is ignored: photon's glass does not absorb");
+                        "interior `" + t.text + "` is ignored: " +
+                            (t.text == "caustics" ? std::string("photon's caustics come from its photons")
+                                                  : std::string("photon's glass has one ior for all colours")));
         } else if (t.is_identifier("media")) {
             skip_effect(next());
         } else {
