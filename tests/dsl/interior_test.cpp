@@ -84,6 +84,16 @@ TEST_CASE("interior fade values that make light grow inside are reported at thei
     CHECK_THAT(all_messages(w3), Contains("interior `dispersion` is ignored"));
 }
 
+TEST_CASE("one texture under different interiors makes different materials", "[dsl][interior]") {
+    const auto b = build_staged("#declare G = texture { pigment { rgbf 1 } }\n"
+                                "sphere { -x, 0.5 texture { G } interior { ior 1.5 fade_distance 0.2 fade_power 1001 } }\n"
+                                "sphere { x, 0.5 texture { G } interior { ior 1.5 fade_distance 0.8 fade_power 1001 } }\n");
+    const Absorption<double>& left = b.scene.material_of(0).params().absorption;
+    const Absorption<double>& right = b.scene.material_of(1).params().absorption;
+    CHECK(left.sigma().x == Approx(5.0));
+    CHECK(right.sigma().x == Approx(1.25));
+}
+
 TEST_CASE("export_pov writes the interior fade back, and reading it again gives the same absorption", "[dsl][interior]") {
     const Parsed p = parse("sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 fade_distance 0.5 fade_power 1001 "
                            "fade_color rgb <0.8, 0.3, 0.1> } }\n");

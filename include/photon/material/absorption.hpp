@@ -61,6 +61,8 @@ public:
     [[nodiscard]] S fade_power() const noexcept { return power_; }
     [[nodiscard]] const Rgb<S>& fade_color() const noexcept { return color_; }
 
+    friend bool operator==(const Absorption&, const Absorption&) = default;
+
     /// The fraction of light per channel that survives one straight segment of length d >= 0.
     [[nodiscard]] Rgb<S> transmittance(S d) const {
         switch (law_) {

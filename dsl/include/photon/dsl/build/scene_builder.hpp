@@ -466,7 +466,8 @@ private:
         return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
                a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent &&
                a.blinn == b.blinn && a.blinn_exponent == b.blinn_exponent && a.metallic == b.metallic &&
-               a.highlight_color == b.highlight_color && a.brilliance == b.brilliance && a.ambient == b.ambient;
+               a.highlight_color == b.highlight_color && a.brilliance == b.brilliance && a.ambient == b.ambient &&
+               a.absorption == b.absorption;
     }
 
 
