@@ -44,7 +44,7 @@ TEST_CASE("interior fade_power 1000 and above is Beer-Lambert with sigma = (1 - 
     CHECK(a.transmittance(1.0).x == Approx(std::exp(-0.4)));
 }
 
-TEST_CASE("interior fade_power below 1000 is POV-Ray's rational fade; fade_colour and declared interiors carry over",
+TEST_CASE("interior fade_power below 1000 is POV-Ray's rational fade, and fade_colour and declared interiors carry over",
           "[dsl][interior]") {
     std::vector<dsl::Diagnostic> w;
     const auto a = interior_absorption_of("interior { I fade_power 2 }", w,
