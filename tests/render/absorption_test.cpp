@@ -178,7 +178,7 @@ RenderSettings absorb_settings(RenderMode mode) {
 
 }  // namespace
 
-TEST_CASE("through a tinted slab, pm and sppm agree with the path tracer block by block", "[absorption][render]") {
+TEST_CASE("through a tinted slab, pm and sppm agree with the path tracer block by block", "[absorption][render][heavy]") {
     const TintedSlabRoom room(true);
     RenderSettings ref = absorb_settings(RenderMode::reference);
     ref.samples_per_pixel = 512;
