@@ -105,6 +105,12 @@ TEMPLATE_TEST_CASE("a layered pigment's bound is the exact maximum, also between
     const Material<S> m({.diffuse = Rgb<S>(S(1)), .diffuse_texture = AnyReflectanceField<S>(stack)});
     check_rgb_near(m.max_diffuse(), 0.25, 0.25, 0.25);
     check_rgb_near(m.diffuse_at(Vec3<S>(S(0.5), S(0), S(0))), 0.25, 0.25, 0.25);
+    // Its ambient light can weigh the layers otherwise (their finishes' ambient, not diffuse).
+    const LayeredPigment<S> glow({uniform_layer<S>({0.5, 0.5, 0.5}, 0, 0, 0.2)});
+    const Material<S> lit({.diffuse = Rgb<S>(S(1)), .ambient = Rgb<S>(S(2)), .diffuse_texture = AnyReflectanceField<S>(stack),
+                           .ambient_texture = AnyReflectanceField<S>(glow)});
+    check_rgb_near(lit.ambient_at(Vec3<S>(S(0.5), S(0), S(0))), 0.2, 0.2, 0.2);
+    check_rgb_near(lit.diffuse_at(Vec3<S>(S(0.5), S(0), S(0))), 0.25, 0.25, 0.25);
 }
 
 TEST_CASE("a layered pigment rejects what POV-Ray's colours cannot mean", "[texture][layered]") {
