@@ -7,6 +7,8 @@
 
 #include "dsl_test_util.hpp"
 
+#include <filesystem>
+
 using namespace dsl_test;
 using Catch::Matchers::Contains;
 using photon::Rgb;
@@ -128,4 +130,26 @@ TEST_CASE("export-pov writes a layered texture's layers back", "[dsl][layers]") 
         CHECK(glm::length(x - y) < 1e-9);
         CHECK(a.scene.material_of(0).ambient_at(p) == b.scene.material_of(0).ambient_at(p));
     }
+}
+
+TEST_CASE("examples/scenes/layers.pov builds without warnings and exports to the same reflectances", "[dsl][layers]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    const auto desc = dsl::parse_file(std::filesystem::path(PHOTON_SCENES_DIR) / "layers.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto a = dsl::build<double>(desc, bo);
+    INFO(all_messages(warnings));
+    CHECK(warnings.empty());
+    std::size_t layered = 0;
+    for (const auto& o : desc.objects) layered += o.texture && !o.texture->layers.empty();
+    CHECK(layered == 6);
+    const auto b = dsl::build<double>(dsl::parse_string(dsl::export_pov(desc), "exported.pov"));
+    REQUIRE(b.scene.objects().size() == a.scene.objects().size());
+    for (std::uint32_t i = 0; i < a.scene.objects().size(); ++i)
+        for (const Vec3<double>& p : {Vec3<double>(-2.1, 0.9, -0.2), Vec3<double>(0.7, 0.3, -0.4), Vec3<double>(1.3, 0, -1.1)}) {
+            INFO("object " << i);
+            CHECK(glm::length(a.scene.material_of(i).diffuse_at(p) - b.scene.material_of(i).diffuse_at(p)) < 1e-9);
+        }
 }
