@@ -171,7 +171,7 @@ TEST_CASE("declared maps, pigment_map, average and image_map", "[dsl][degradatio
                Contains("2:44: expected a pigment_map identifier, found `M` (a color_map, declared at 1:10)"));
 }
 
-TEST_CASE("patterned textures become one texture; layered ones keep their layers", "[dsl][degradation]") {
+TEST_CASE("patterned textures become one texture, layered ones keep their layers", "[dsl][degradation]") {
     const Parsed p = parse(std::string(lit) +
                            "sphere { 0, 1 texture { pigment { rgb 1 } finish { phong 1 } } "
                            "texture { pigment { rgbt <0, 0, 0, 0.8> } } }\n"

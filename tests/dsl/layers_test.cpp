@@ -97,10 +97,13 @@ TEST_CASE("what photon approximates in a layered texture is reported, and nothin
         "  texture { pigment { rgb <0, 0.5, 0> } finish { diffuse 0.8 ambient 0 } } }\n"
         // 10: a highlight on the top layer alone is exact
         "sphere { 0, 1 translate 6*x texture { pigment { rgb 0.5 } finish { ambient 0 } }\n"
-        "  texture { pigment { rgbf <1, 1, 1, 0.9> } finish { phong 0.8 ambient 0 } } }\n");
+        "  texture { pigment { rgbf <1, 1, 1, 0.9> } finish { phong 0.8 ambient 0 } } }\n"
+        // 12: an upper layer's negative ambient (POV-Ray takes light away there)
+        "sphere { 0, 1 translate 9*x texture { pigment { rgb 0.5 } } texture { pigment { rgbt 0.5 } finish { ambient -0.2 } } }\n");
     INFO(all_messages(b.warnings));
     CHECK(places(b.warnings, "approximated texture") ==
           std::vector<std::string>{"4:52 texture", "4:62 texture", "6:68 texture"});  // phong, normal, the lower reflection
+    CHECK(places(b.warnings, "approximated finish") == std::vector<std::string>{"12:101 ambient"});
     CHECK_THAT(all_messages(b.warnings), Contains("photon shows this layer's highlight at full strength"));
     CHECK_THAT(all_messages(b.warnings), Contains("photon shades every layer with this layer's `normal`"));
     CHECK_THAT(all_messages(b.warnings), Contains("POV-Ray adds every layer's"));

@@ -148,7 +148,14 @@ template <Scalar S>
     std::vector<PigmentLayer<S>> diffuse_layers, glow_layers;
     bool glows = false;
     for (const Texture* t : stack) {
-        const Vector3 glow = glm::max(written_glow(t->finish, global, version), Vector3(0.0));
+        const Vector3 written = written_glow(t->finish, global, version);
+        const Vector3 glow = glm::max(written, Vector3(0.0));
+        if (glow != written && t != stack.front())  // material_params reports the bottom's
+            warn(finish_item(t->finish, "ambient", place(*t)),
+                 "ambient and emission sum to rgb " + rgb_text(written) +
+                     " (POV-Ray subtracts light where negative): photon's surfaces show no negative light and it "
+                     "uses rgb " + rgb_text(glow),
+                 "approximated finish", "ambient");
         glows = glows || glow != Vector3(0.0);
         diffuse_layers.push_back(library_layer<S>(*t, to_world, Vector3(t->finish.diffuse), warn, pigment_place(*t)));
         glow_layers.push_back(library_layer<S>(*t, to_world, glow, warn, pigment_place(*t)));
