@@ -48,6 +48,10 @@ template <Scalar S> struct MaterialParams {
     Rgb<S> ambient{S(0)};
     /// Optional texture: the albedo at point p is then diffuse * diffuse_texture(p).
     AnyReflectanceField<S> diffuse_texture{};
+    /// Optional texture for the ambient radiance alone: ambient * ambient_texture(p) (without it,
+    /// the diffuse texture's). A layered texture's layers weigh their colours by their own
+    /// finishes, which differ between the diffuse and the ambient light.
+    AnyReflectanceField<S> ambient_texture{};
     /// Optional bumps: the shading normal at p is normal_field(p, geometric normal).
     AnyNormalField<S> normal_field{};
     /// What light loses per straight segment it travels inside the surface (clear by default).
@@ -102,6 +106,7 @@ public:
     [[nodiscard]] Rgb<S> ambient_at(const Vec3<S>& p) const {
         if (!has_ambient_) [[likely]]
             return Rgb<S>(S(0));
+        if (params_.ambient_texture) return params_.ambient * params_.ambient_texture(p);
         return params_.diffuse_texture ? params_.ambient * params_.diffuse_texture(p) : params_.ambient;
     }
     /// The colour metallic highlights take at surface point `p`.
@@ -197,6 +202,7 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
         fail(os.str());
     }
     check_rgb(p.ambient, "ambient", "radiance");
+    if (p.ambient_texture) check_rgb(p.ambient_texture.upper_bound(), "the ambient texture's upper bound as", "radiance");
     check_rgb(p.highlight_color, "highlight", "colour");
     has_ambient_ = !is_black(p.ambient);
 }

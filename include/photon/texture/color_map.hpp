@@ -31,9 +31,16 @@ public:
                 throw std::invalid_argument("color_map: values and colours must be finite, colours >= 0");
     }
 
-    /// The colour at `value`: the last entry's at or above the last value, else the first entry
-    /// whose value is not below `value` blended linearly with the one before it.
-    [[nodiscard]] Rgb<S> operator()(double value) const noexcept {
+    /// Where `value` falls in the map: the colour there is entry `prev` blended linearly towards
+    /// entry `cur` by `fraction` (prev == cur, fraction 0 on an entry or beyond the ends).
+    struct Position {
+        std::size_t prev = 0, cur = 0;
+        S fraction = S(0);
+    };
+    /// The last entry at or above the last value, else the first entry whose value is not below
+    /// `value` with the one before it. Exposed so that values kept beside the colours (a layer's
+    /// filter and transmit, texture/layered.hpp) blend exactly as the colours do.
+    [[nodiscard]] Position locate(double value) const noexcept {
         const std::size_t last = entries_.size() - 1;
         std::size_t cur = 0, prev = 0;
         if (value >= entries_[last].value) {
@@ -42,12 +49,19 @@ public:
             while (value > entries_[cur].value) prev = cur++;
         }
         if (value == entries_[cur].value) prev = cur;
-        if (prev == cur) return entries_[cur].color;
+        if (prev == cur) return {cur, cur, S(0)};
         const Entry& p = entries_[prev];
         const Entry& c = entries_[cur];
-        const S fraction = S((value - p.value) / (c.value - p.value));
-        return p.color + fraction * (c.color - p.color);
+        return {prev, cur, S((value - p.value) / (c.value - p.value))};
     }
+    /// The colour at a position locate() gave.
+    [[nodiscard]] Rgb<S> at(const Position& where) const noexcept {
+        const Rgb<S>& p = entries_[where.prev].color;
+        if (where.prev == where.cur) return p;
+        return p + where.fraction * (entries_[where.cur].color - p);
+    }
+    /// The colour at `value`.
+    [[nodiscard]] Rgb<S> operator()(double value) const noexcept { return at(locate(value)); }
 
     [[nodiscard]] const std::vector<Entry>& entries() const noexcept { return entries_; }
     /// Per channel, the largest colour the map can give (it only interpolates between entries).

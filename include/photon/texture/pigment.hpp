@@ -37,9 +37,10 @@ public:
     }
 
     /// The colour at world point `p`.
-    [[nodiscard]] Rgb<S> operator()(const Vec3<S>& p) const noexcept {
-        const Vec3<double> q = to_pattern_.point(Vec3<double>(p));
-        return colors_(evaluate(pattern_, q, cell_epsilon_));
+    [[nodiscard]] Rgb<S> operator()(const Vec3<S>& p) const noexcept { return colors_(value(p)); }
+    /// The pattern's value at world point `p`, the one the colour map picks from.
+    [[nodiscard]] double value(const Vec3<S>& p) const noexcept {
+        return evaluate(pattern_, to_pattern_.point(Vec3<double>(p)), cell_epsilon_);
     }
     /// Per channel, no point is brighter than this.
     [[nodiscard]] Rgb<S> upper_bound() const noexcept { return bound_; }

@@ -187,7 +187,26 @@ struct Texture {
     std::optional<Normal> normal;  ///< none: the geometric normal shades
     std::map<std::string, SourceLocation> ignored;  ///< parts photon does not render (normal, ...)
     SourceLocation at;
+    /// POV-Ray's layered texture (`texture { A } texture { B }`): the layers on top of this one,
+    /// bottom first, each without layers of its own. Where a layer's pigment has filter or
+    /// transmit, the layers below show through (build/layers.hpp).
+    std::vector<Texture> layers;
 };
+
+/// Moves a texture by `step` after its own transformations: its pigment, its normal and its layers.
+inline void transform_texture(Texture& t, const Transform& step) {
+    t.pigment.transform = t.pigment.transform.then(step);
+    if (t.normal) t.normal->transform = t.normal->transform.then(step);
+    for (Texture& layer : t.layers) transform_texture(layer, step);
+}
+
+/// Puts `top` (and the layers it carries) on top of the layers of `bottom`.
+inline void add_layer(Texture& bottom, Texture top) {
+    std::vector<Texture> above = std::move(top.layers);
+    top.layers.clear();
+    bottom.layers.push_back(std::move(top));
+    for (Texture& t : above) bottom.layers.push_back(std::move(t));
+}
 
 /// An object's `photons { }` block (POV-Ray's photon options).
 struct ObjectPhotons {

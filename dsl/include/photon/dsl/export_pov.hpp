@@ -254,6 +254,7 @@ private:
         out_ << " }\n";
         indent(level);
         out_ << "}\n";
+        for (const Texture& layer : t.layers) texture(layer, level);  // POV-Ray's layers, each on the one before
     }
 
     void modifiers(const Object& o, int level) {

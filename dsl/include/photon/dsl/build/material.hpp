@@ -46,6 +46,14 @@ template <Scalar S> [[nodiscard]] Absorption<S> interior_absorption(const Interi
     return Absorption<S>::pov_fade(S(in.fade_distance), S(power), Rgb<S>(color));
 }
 
+/// The light a finish shows by itself, before the pigment's colour: POV-Ray 3.7's constant term
+/// (trace.cpp, ComputeLightedTexture) ambient * ambient_light + emission, with the ambient part
+/// only where radiosity is off or the scene is older than 3.7 (no #version reads as 3.62).
+[[nodiscard]] inline Vector3 written_glow(const Finish& f, const GlobalSettings& global, std::optional<double> version) {
+    const bool ambient_counts = !global.radiosity || version.value_or(3.62) < 3.7 - 1e-9;
+    return f.emission + (ambient_counts ? f.ambient * global.ambient_light : Vector3(0.0));
+}
+
 /// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
 /// (1 - filter - transmit) (for a patterned pigment, `diffuse` alone: the pattern's colours,
 /// library_pigment, carry the rest); transmission = filter * pigment + transmit, from a patterned
@@ -118,15 +126,12 @@ template <Scalar S>
         if (r.falloff != 1 || r.exponent != 1 || r.metallic != 0)
             warn(r.at, "reflection `falloff`, `exponent` and `metallic` are ignored by photon", "approximated finish", "reflection");
     }
-    // POV-Ray 3.7's constant term (trace.cpp, ComputeLightedTexture): pigment * opacity *
-    // (ambient * ambient_light + emission), with the ambient part only where radiosity is off
-    // or the scene is older than 3.7 (no #version reads as 3.62).
-    const bool ambient_counts = !global.radiosity || version.value_or(3.62) < 3.7 - 1e-9;
-    const Vector3 written_glow = f.emission + (ambient_counts ? f.ambient * global.ambient_light : Vector3(0.0));
-    const Vector3 glow = glm::max(written_glow, Vector3(0.0));
-    if (glow != written_glow)
+    // POV-Ray 3.7's constant term: pigment * opacity * written_glow.
+    const Vector3 written = written_glow(f, global, version);
+    const Vector3 glow = glm::max(written, Vector3(0.0));
+    if (glow != written)
         warn(item(f.written.count("ambient") || !f.written.count("emission") ? "ambient" : "emission"),
-             "ambient and emission sum to rgb " + rgb_text(written_glow) +
+             "ambient and emission sum to rgb " + rgb_text(written) +
                  " (POV-Ray subtracts light where negative): photon's surfaces show no negative light and it uses rgb " +
                  rgb_text(glow),
              "approximated finish", "ambient");

@@ -22,6 +22,7 @@
 
 #include "../description.hpp"
 #include "../mesh_files.hpp"
+#include "layers.hpp"
 #include "lights.hpp"
 #include "material.hpp"
 #include "normal.hpp"
@@ -107,6 +108,7 @@ private:
         Transform transform;
         Transform texture_placement;  ///< the texture's pattern space to the world
         Transform normal_placement;   ///< its normal's pattern space to the world
+        Transform texture_world;      ///< the space the texture was written in to the world (for its layers)
     };
 
     static Inherited inherit(const Object& o, const Inherited& parent) {
@@ -124,9 +126,10 @@ private:
                                            : parent.texture ? parent.normal_placement
                                            : o.default_texture ? normal_transform(*o.default_texture)
                                                                : Transform{};
+        const Transform texture_world = o.texture ? parent.transform : parent.texture ? parent.texture_world : Transform{};
         return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                 o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                o.transform.then(parent.transform), placement, normal_placement};
+                o.transform.then(parent.transform), placement, normal_placement, texture_world};
     }
 
     void add(const Object& o, const Inherited& parent) {
@@ -441,6 +444,7 @@ private:
     MaterialId material_for(const Inherited& in, const Object& o) {
         static const Texture pov_default{};
         const Texture& tex = in.texture ? *in.texture : pov_default;
+        if (!tex.layers.empty()) return layered_material_for(in, tex, o);
         MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, desc_.version, warn_, o.at);
         const PigmentPattern* pattern = tex.pigment.pattern.get();
         const Transform placement = pattern ? in.texture_placement : Transform{};
@@ -457,6 +461,22 @@ private:
             if (normal) p.normal_field = AnyNormalField<S>(library_normal<S>(*normal, in.normal_placement));
             const MaterialId id = scene_->add_material(Material<S>(p));
             materials_.push_back({p, pattern, placement, made_normal, id});
+            return id;
+        } catch (const std::invalid_argument& e) {
+            throw Error(at, e.what());
+        }
+    }
+    /// A layered texture's material, shared by the objects that inherit the same texture in the
+    /// same place and interior.
+    MaterialId layered_material_for(const Inherited& in, const Texture& tex, const Object& o) {
+        for (const auto& m : layered_)
+            if (m.texture == &tex && m.interior == in.interior && m.world == in.texture_world) return m.id;
+        const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
+        try {
+            const MaterialParams<S> p = layered_material_params<S>(tex, in.texture_world, in.interior, desc_.settings,
+                                                                   desc_.version, warn_, o.at);
+            const MaterialId id = scene_->add_material(Material<S>(p));
+            layered_.push_back({&tex, in.interior, in.texture_world, id});
             return id;
         } catch (const std::invalid_argument& e) {
             throw Error(at, e.what());
@@ -489,6 +509,13 @@ private:
         MaterialId id;
     };
     std::vector<MadeMaterial> materials_;
+    struct MadeLayered {
+        const Texture* texture;
+        const Interior* interior;
+        Transform world;
+        MaterialId id;
+    };
+    std::vector<MadeLayered> layered_;
     std::vector<SourceLocation> object_at_;
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them

@@ -206,8 +206,7 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     const std::string& w = t.text;
     if (w == "texture") {
         Texture tex = parse_texture(next(), default_texture_);
-        // `#declare T = texture { } texture { }`: POV-Ray's layered texture; as on an object,
-        // photon keeps the first (bottom) layer.
+        // `#declare T = texture { } texture { }`: POV-Ray's layered texture, the first the bottom.
         // Looking for a layer must not run the next directive or call the next macro (either may
         // use this declaration: screen.pov's `Screen_Plane(MyScreenTexture, ...)`); a token that is
         // no layer is read again afterwards, when it runs.
@@ -228,12 +227,7 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
             }
             return more;
         };
-        while (another_layer()) {
-            const Token layer = next();
-            parse_texture(layer, default_texture_);
-            degrade(layer.location, degraded::approximated_texture, "texture",
-                    "layered `texture`: photon uses the first (bottom) texture and ignores this layer on top of it");
-        }
+        while (another_layer()) add_layer(tex, parse_texture(next(), default_texture_));
         return tex;
     }
     if (w == "pigment") return parse_pigment(next(), Pigment{});

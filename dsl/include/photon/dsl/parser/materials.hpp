@@ -310,9 +310,8 @@ inline Texture Parser::parse_texture_body(const Token& kw, Texture tex) {
             }
             close_block(t, "a `texture`");
         } else if (Transform step; try_transform(step)) {
-            // The texture's transformations move its pigment and its normal alike.
-            tex.pigment.transform = tex.pigment.transform.then(step);
-            if (tex.normal) tex.normal->transform = tex.normal->transform.then(step);
+            // The texture's transformations move its pigment, its normal and its layers alike.
+            transform_texture(tex, step);
         } else if (parse_pattern_item(st)) {
             continue;
         } else {

@@ -224,10 +224,13 @@ inline void Parser::parse_material(const Token& kw, Object& obj) {
         if (m.texture) obj.texture = m.texture;
         if (m.interior) obj.interior = m.interior;
     }
+    bool had_texture = false;
     for (;;) {
         const Token t = peek();
-        if (t.is_identifier("texture"))
-            obj.texture = parse_texture(next(), default_texture_);
+        if (t.is_identifier("texture") && had_texture && obj.texture)  // a layer on top of the first
+            add_layer(*obj.texture, parse_texture(next(), default_texture_));
+        else if (t.is_identifier("texture"))
+            obj.texture = parse_texture(next(), default_texture_), had_texture = true;
         else if (t.is_identifier("interior"))
             obj.interior = parse_interior(next(), obj.interior.value_or(Interior{}));
         else
@@ -244,20 +247,14 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
         if (Transform step; try_transform(step)) {
             // POV-Ray moves the texture already given with the object, not one given after.
             obj.transform = obj.transform.then(step);
-            if (obj.texture) obj.texture->pigment.transform = obj.texture->pigment.transform.then(step);
-            if (obj.texture && obj.texture->normal)
-                obj.texture->normal->transform = obj.texture->normal->transform.then(step);
+            if (obj.texture) transform_texture(*obj.texture, step);
             continue;
         }
         const std::string& w = t.text;
         if (w == "texture") {
-            if (had_texture) {
-                // POV-Ray layers each further texture on top of the first, which is the bottom one
-                // and the only one that must be opaque: the layers above are usually partly clear.
-                parse_texture(next(), default_texture_);
-                degrade(t.location, degraded::approximated_texture, "texture",
-                        "layered `texture`: photon uses the object's first (bottom) texture and ignores this "
-                        "layer on top of it");
+            if (had_texture && obj.texture) {
+                // POV-Ray layers each further texture on top of the first (the bottom one).
+                add_layer(*obj.texture, parse_texture(next(), default_texture_));
                 continue;
             }
             had_texture = true;

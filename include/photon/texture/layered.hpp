@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// POV-Ray's layered texture (`texture { A } texture { B }`: B on top of A) as one reflectance
+// field. Each layer's colour carries POV-Ray's filter and transmit, which on a layer mean "let
+// the layers below show through". Composed as POV-Ray 3.7's Trace::ComputeLightedTexture does,
+// from the top layer down:
+//     result  += through * colour * (1 - filter - transmit) * weight
+//     through *= filter * colour + transmit          (through starts at 1)
+// where `weight` is the layer's own factor (its finish's diffuse for the diffuse reflectance,
+// its ambient and emission for the glow). What `through` still holds after the bottom layer is
+// what the stack passes to a surface behind it (passed()).
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "../math/vec.hpp"
+#include "pigment.hpp"
+
+namespace photon {
+
+/// A colour with POV-Ray's filter (see-through tinted by the colour) and transmit (see-through
+/// untinted), each >= 0 with filter + transmit <= 1.
+template <Scalar S> struct LayerColor {
+    Rgb<S> color{S(0)};
+    S filter = S(0), transmit = S(0);
+
+    /// The share of the layer's own colour: POV-Ray 3.7's opacity.
+    [[nodiscard]] S opacity() const noexcept { return S(1) - filter - transmit; }
+    /// What the layer lets through of the light from below (POV-Ray's TransmittedColour).
+    [[nodiscard]] Rgb<S> passed() const noexcept { return filter * color + Rgb<S>(transmit); }
+};
+
+/// A layer's filter and transmit, one per colour map entry.
+template <Scalar S> struct FilterTransmit {
+    S filter = S(0), transmit = S(0);
+};
+
+/// One layer: a colour everywhere or a pigment whose map entries carry filter and transmit, and
+/// the layer's weight (what multiplies its own colour).
+template <Scalar S> class PigmentLayer {
+public:
+    /// One colour everywhere. Throws std::invalid_argument on a colour or weight that is not
+    /// finite and >= 0, or filter and transmit outside [0, 1] in sum.
+    PigmentLayer(const LayerColor<S>& color, const Rgb<S>& weight) : entries_{color}, weight_(weight) { check(); }
+    /// A pigment whose colour map entry i has the filter and transmit `clear[i]` (blended between
+    /// entries as the colours are). Throws std::invalid_argument as above, or when `clear` does
+    /// not have one element per map entry.
+    PigmentLayer(Pigment<S> pigment, const std::vector<FilterTransmit<S>>& clear, const Rgb<S>& weight)
+        : pigment_(std::move(pigment)), weight_(weight) {
+        const auto& map = pigment_->colors().entries();
+        if (clear.size() != map.size())
+            throw std::invalid_argument("layered texture: one filter and transmit is needed per colour map entry");
+        for (std::size_t i = 0; i < map.size(); ++i)
+            entries_.push_back({map[i].color, clear[i].filter, clear[i].transmit});
+        check();
+    }
+
+    /// The layer's colour, filter and transmit at world point `p`.
+    [[nodiscard]] LayerColor<S> operator()(const Vec3<S>& p) const noexcept {
+        if (!pigment_) return entries_.front();
+        const auto where = pigment_->colors().locate(pigment_->value(p));
+        const LayerColor<S>& a = entries_[where.prev];
+        if (where.prev == where.cur) return a;
+        return blend(a, entries_[where.cur], where.fraction);
+    }
+    [[nodiscard]] const Rgb<S>& weight() const noexcept { return weight_; }
+    /// The colours the layer blends between (one for a uniform layer).
+    [[nodiscard]] const std::vector<LayerColor<S>>& entries() const noexcept { return entries_; }
+    [[nodiscard]] bool is_uniform() const noexcept { return !pigment_; }
+
+    [[nodiscard]] static LayerColor<S> blend(const LayerColor<S>& a, const LayerColor<S>& b, S fraction) noexcept {
+        return {a.color + fraction * (b.color - a.color), a.filter + fraction * (b.filter - a.filter),
+                a.transmit + fraction * (b.transmit - a.transmit)};
+    }
+
+private:
+    void check() const {
+        if (!is_finite(weight_) || min_component(weight_) < S(0))
+            throw std::invalid_argument("layered texture: a layer's weight must be finite and >= 0");
+        for (const LayerColor<S>& e : entries_) {
+            if (!is_finite(e.color) || min_component(e.color) < S(0))
+                throw std::invalid_argument("layered texture: colours must be finite and >= 0");
+            if (!(e.filter >= S(0) && e.transmit >= S(0) && e.filter + e.transmit <= S(1) + S(1e-6)))
+                throw std::invalid_argument("layered texture: filter and transmit must be >= 0 and sum to <= 1");
+        }
+    }
+
+    std::optional<Pigment<S>> pigment_;  ///< none: entries_ holds the one colour
+    std::vector<LayerColor<S>> entries_;
+    Rgb<S> weight_;
+};
+
+/// Layers composed into one reflectance: a ReflectanceField (reflectance_field.hpp).
+template <Scalar S> class LayeredPigment {
+public:
+    /// `layers` bottom first, as written in the scene. Throws std::invalid_argument when empty.
+    explicit LayeredPigment(std::vector<PigmentLayer<S>> layers) : layers_(std::move(layers)) {
+        if (layers_.empty()) throw std::invalid_argument("layered texture: at least one layer is needed");
+        bound_ = compute_bound();
+    }
+
+    /// The composite reflectance at world point `p`.
+    [[nodiscard]] Rgb<S> operator()(const Vec3<S>& p) const noexcept {
+        Rgb<S> sum(S(0)), through(S(1));
+        for (auto layer = layers_.rbegin(); layer != layers_.rend(); ++layer) {
+            const LayerColor<S> c = (*layer)(p);
+            sum += through * c.color * (c.opacity() * layer->weight());
+            through *= c.passed();
+            if (max_component(through) <= S(0)) break;  // nothing below shows
+        }
+        return sum;
+    }
+    /// What the whole stack lets through at `p` to a surface behind it: the product of every
+    /// layer's passed().
+    [[nodiscard]] Rgb<S> passed(const Vec3<S>& p) const noexcept {
+        Rgb<S> through(S(1));
+        for (const PigmentLayer<S>& layer : layers_) through *= layer(p).passed();
+        return through;
+    }
+    /// Per channel, no point is brighter than this (exact for colours the maps reach at their
+    /// entries and between them).
+    [[nodiscard]] Rgb<S> upper_bound() const noexcept { return bound_; }
+    [[nodiscard]] const std::vector<PigmentLayer<S>>& layers() const noexcept { return layers_; }
+
+private:
+    /// From the bottom up: B = max over the layer's colours c of c.color * c.opacity() * weight +
+    /// c.passed() * B_below. A colour between two map entries is a linear blend, so that
+    /// expression is a quadratic in the blend fraction: its maximum over [0, 1] is exact.
+    [[nodiscard]] Rgb<S> compute_bound() const noexcept {
+        Rgb<S> below(S(0));
+        for (const PigmentLayer<S>& layer : layers_) {
+            const auto& e = layer.entries();
+            Rgb<S> best(S(0));
+            for (int ch = 0; ch < 3; ++ch) {
+                auto g = [&](const LayerColor<S>& c) {
+                    return double(c.color[ch]) * double(c.opacity()) * double(layer.weight()[ch]) +
+                           double(c.passed()[ch]) * double(below[ch]);
+                };
+                double m = 0;
+                for (std::size_t i = 0; i < e.size(); ++i) {
+                    m = std::max(m, g(e[i]));
+                    if (i == 0 || layer.is_uniform()) continue;
+                    const double g0 = g(e[i - 1]), gh = g(PigmentLayer<S>::blend(e[i - 1], e[i], S(0.5))), g1 = g(e[i]);
+                    const double a = 2 * g0 - 4 * gh + 2 * g1, b = -3 * g0 + 4 * gh - g1;
+                    if (a < 0) {
+                        const double x = -b / (2 * a);
+                        if (x > 0 && x < 1) m = std::max(m, (a * x + b) * x + g0);
+                    }
+                }
+                best[ch] = S(m);
+            }
+            below = best;
+        }
+        return below;
+    }
+
+    std::vector<PigmentLayer<S>> layers_;
+    Rgb<S> bound_{S(0)};
+};
+
+}  // namespace photon
