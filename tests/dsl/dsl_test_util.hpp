@@ -96,17 +96,19 @@ inline const char* const stage =
     "camera { location <0, 0, -5> look_at 0 }\n"
     "light_source { <0, 5, 0>, rgb 1 fade_distance 1 fade_power 2 }\n";
 
-/// A scene built from `stage` followed by `text`, in double, with the warnings of both steps.
+/// A scene built from `stage_text` (default `stage`) followed by `text`, in double, with the
+/// warnings of both steps.
 struct StagedScene {
     dsl::SceneDescription desc;
     std::vector<dsl::Diagnostic> warnings;
     photon::DefaultScene<double> scene;
 };
-inline StagedScene build_staged(const std::string& text, const dsl::ParseOptions& options = {}) {
+inline StagedScene build_staged(const std::string& text, const dsl::ParseOptions& options = {},
+                                const char* stage_text = stage) {
     StagedScene b;
     dsl::ParseOptions po = options;
     po.diagnostics = collect(b.warnings);
-    b.desc = dsl::parse_string(std::string(stage) + text, "test.pov", po);
+    b.desc = dsl::parse_string(std::string(stage_text) + text, "test.pov", po);
     dsl::BuildOptions bo;
     bo.diagnostics = collect(b.warnings);
     b.scene = std::move(dsl::build<double>(b.desc, bo).scene);

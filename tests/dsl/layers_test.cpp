@@ -18,16 +18,7 @@ namespace {
 
 const char* const layer_stage = "#version 3.7;\ncamera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, 1 }\n";
 
-StagedScene build_layers(const std::string& text) {
-    StagedScene b;
-    dsl::ParseOptions po;
-    po.diagnostics = collect(b.warnings);
-    b.desc = dsl::parse_string(std::string(layer_stage) + text, "test.pov", po);
-    dsl::BuildOptions bo;
-    bo.diagnostics = collect(b.warnings);
-    b.scene = std::move(dsl::build<double>(b.desc, bo).scene);
-    return b;
-}
+StagedScene build_layers(const std::string& text) { return build_staged(text, {}, layer_stage); }
 
 void check_near(const Rgb<double>& got, double r, double g, double b) {
     CHECK(got.x == Approx(r).margin(1e-12));

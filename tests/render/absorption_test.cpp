@@ -8,6 +8,8 @@
 
 #include <photon/photon.hpp>
 
+#include "film_compare.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -155,16 +157,6 @@ struct TintedSlabRoom {
     }
 };
 
-std::vector<Rgb<double>> absorb_block_means(const Film& film, unsigned bx, unsigned by) {
-    std::vector<Rgb<double>> blocks(std::size_t(bx) * by, Rgb<double>(0.0));
-    for (unsigned y = 0; y < film.height(); ++y)
-        for (unsigned x = 0; x < film.width(); ++x)
-            blocks[(y * by / film.height()) * bx + x * bx / film.width()] +=
-                Rgb<double>(film.pixels()[std::size_t(y) * film.width() + x]);
-    for (auto& b : blocks) b /= double(film.width() * film.height()) / double(bx * by);
-    return blocks;
-}
-
 RenderSettings absorb_settings(RenderMode mode) {
     RenderSettings s;
     s.mode = mode;
@@ -199,7 +191,7 @@ TEST_CASE("through a tinted slab, pm and sppm agree with the path tracer block b
     for (std::uint64_t seed : {1u, 2u})
         for (int m = 0; m < 3; ++m) {
             modes[m]->seed = seed;
-            blocks[m][seed - 1] = absorb_block_means(render(room.scene, room.camera, *modes[m]).film, 4, 3);
+            blocks[m][seed - 1] = block_means(render(room.scene, room.camera, *modes[m]).film, 4, 3);
         }
     constexpr std::size_t count = 12;
     double noise2[3] = {0, 0, 0};
@@ -214,7 +206,7 @@ TEST_CASE("through a tinted slab, pm and sppm agree with the path tracer block b
     // known to be far tighter than what a pass ignoring it would miss by.
     const TintedSlabRoom clear(false);
     ref.seed = 1;
-    const auto clear_blocks = absorb_block_means(render(clear.scene, clear.camera, ref).film, 4, 3);
+    const auto clear_blocks = block_means(render(clear.scene, clear.camera, ref).film, 4, 3);
     double moved = 0;
     for (std::size_t b = 0; b < count; ++b)
         for (int c = 0; c < 3; ++c) moved = std::max(moved, std::abs(clear_blocks[b][c] / mean_of(0, b, c) - 1));

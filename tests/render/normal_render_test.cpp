@@ -9,6 +9,8 @@
 
 #include <photon/photon.hpp>
 
+#include "film_compare.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -139,14 +141,6 @@ struct LeaningBox {
     }
 };
 
-std::vector<Rgb<double>> normal_block_means(const Film& film, unsigned bx, unsigned by) {
-    std::vector<Rgb<double>> means(std::size_t(bx) * by, Rgb<double>(0.0));
-    const unsigned w = film.width() / bx, h = film.height() / by;
-    for (unsigned y = 0; y < by * h; ++y)
-        for (unsigned x = 0; x < bx * w; ++x) means[(y / h) * bx + x / w] += Rgb<double>(film.at(x, y)) / double(w * h);
-    return means;
-}
-
 }  // namespace
 
 TEST_CASE("under leaning and bumpy shading normals, pm and sppm agree with the path tracer block by block",
@@ -173,7 +167,7 @@ TEST_CASE("under leaning and bumpy shading normals, pm and sppm agree with the p
     for (std::uint64_t seed : {1u, 2u})
         for (int m = 0; m < 3; ++m) {
             modes[m]->seed = seed;
-            blocks[m][seed - 1] = normal_block_means(render(box.scene, box.camera, *modes[m]).film, 4, 4);
+            blocks[m][seed - 1] = block_means(render(box.scene, box.camera, *modes[m]).film, 4, 4);
         }
     double noise2[3] = {0, 0, 0};
     for (int m = 0; m < 3; ++m)
@@ -187,7 +181,7 @@ TEST_CASE("under leaning and bumpy shading normals, pm and sppm agree with the p
     // agreement below is known to be far tighter than what a pass ignoring them would miss by.
     const LeaningBox flat(false);
     ref.seed = 1;
-    const auto flat_blocks = normal_block_means(render(flat.scene, flat.camera, ref).film, 4, 4);
+    const auto flat_blocks = block_means(render(flat.scene, flat.camera, ref).film, 4, 4);
     double moved = 0;
     for (std::size_t b = 0; b < 16; ++b)
         for (int c = 0; c < 3; ++c) moved = std::max(moved, std::abs(flat_blocks[b][c] / mean_of(0, b, c) - 1));

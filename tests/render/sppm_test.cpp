@@ -9,10 +9,10 @@
 
 #include "../../examples/cornell_box.hpp"
 
+#include "film_compare.hpp"
 #include "render/pixel_of.hpp"
 
 #include <cmath>
-#include <cstring>
 #include <vector>
 
 #include "transport/furnace_sphere.hpp"
@@ -40,11 +40,6 @@ double rms_relative_error(const Film& film, double expected) {
     double sum = 0;
     for (const auto& p : film.pixels()) sum += (p.x / expected - 1) * (p.x / expected - 1);
     return std::sqrt(sum / double(film.pixels().size()));
-}
-
-bool identical(const Film& a, const Film& b) {
-    return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0;
 }
 
 }  // namespace
@@ -135,15 +130,6 @@ struct DiffuseBox {
         scene.commit();
     }
 };
-
-/// Mean red, green and blue of the pixels of each of bx x by equal blocks.
-std::vector<Rgb<double>> block_means(const Film& film, unsigned bx, unsigned by) {
-    std::vector<Rgb<double>> means(std::size_t(bx) * by, Rgb<double>(0.0));
-    const unsigned w = film.width() / bx, h = film.height() / by;
-    for (unsigned y = 0; y < by * h; ++y)
-        for (unsigned x = 0; x < bx * w; ++x) means[(y / h) * bx + x / w] += Rgb<double>(film.at(x, y)) / double(w * h);
-    return means;
-}
 
 }  // namespace
 
