@@ -396,7 +396,9 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
 
-    const photon::RenderResult result = photon::render(built.scene, built.camera, settings);
+    photon::RenderResult result = photon::render(built.scene, built.camera, settings);
+    // A file with assumed_gamma G rendered numbers of a gamma-G space; the image is linear.
+    photon::decode_working_gamma(result.film, built.working_gamma);
     const bool partial = result.stats.partial || cancel_requested.load();
     if (partial) progress.finish();
 

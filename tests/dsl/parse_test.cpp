@@ -587,6 +587,16 @@ TEST_CASE("#default changes the texture of objects written after it", "[dsl][tex
     CHECK(b.scene.material_of(1).diffuse() == Rgb<double>(0.5));
 }
 
+TEST_CASE("assumed_gamma sets the working gamma the image is decoded from, without a warning", "[dsl][settings]") {
+    std::vector<dsl::Diagnostic> w;
+    CHECK(built(std::string(stage) + "sphere { 0, 1 }\n", &w).working_gamma == 1.0f);
+    CHECK(built(std::string(stage) + "sphere { 0, 1 }\nglobal_settings { assumed_gamma 2.2 }\n", &w).working_gamma ==
+          2.2f);
+    CHECK(w.empty());
+    CHECK_THROWS_WITH(built(std::string(stage) + "global_settings { assumed_gamma 0 }\nsphere { 0, 1 }\n"),
+                      Contains("test.pov:") && Contains("`assumed_gamma` must be a positive number, found 0"));
+}
+
 TEST_CASE("render settings: POV-Ray's keywords, photon's own, then overrides", "[dsl][settings]") {
     std::vector<dsl::Diagnostic> w;
     const std::string text =

@@ -38,6 +38,9 @@ struct BuiltScene {
     DefaultScene<S> scene;
     PinholeCamera<S> camera;
     RenderSettings settings;
+    /// The file's `assumed_gamma`: the film holds numbers of that working space, and an image
+    /// written from it is first converted to linear by decode_working_gamma (film/tone_map.hpp).
+    float working_gamma = 1.0f;
 };
 
 /// The library's scene, camera and render settings for `desc`. Throws dsl::Error with the
@@ -67,7 +70,7 @@ template <Scalar S>
     // (render() lists the same objects in RenderStats::warnings for programs using the library).
     if (settings.mode != RenderMode::rt && settings.mode != RenderMode::reference && scene_has_caustics(scene))
         for (std::uint32_t id : unaimed_specular_objects(scene)) warn(builder.object_locations()[id], unaimed_caustics_warning);
-    return BuiltScene<S>{std::move(scene), *camera, std::move(settings)};
+    return BuiltScene<S>{std::move(scene), *camera, std::move(settings), float(desc.settings.assumed_gamma.value_or(1.0))};
 }
 
 }  // namespace photon::dsl

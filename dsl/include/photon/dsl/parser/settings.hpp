@@ -33,11 +33,12 @@ inline void Parser::parse_global_settings(const Token& kw) {
         } else if (block) {
             parse_settings_block(t);
         } else if (w == "assumed_gamma") {
+            // assumed_gamma FLOAT: the gamma of the space the scene's colours are numbers in; the
+            // output converts to linear (BuiltScene::working_gamma), as POV-Ray 3.7 does.
             SourceLocation at;
             g.assumed_gamma = parse_float("`assumed_gamma`", &at);
-            if (*g.assumed_gamma != 1.0)
-                warn(at, "assumed_gamma " + format_number(*g.assumed_gamma) +
-                             ": photon reads every colour as linear (as with assumed_gamma 1.0)");
+            if (!(*g.assumed_gamma > 0.0) || !std::isfinite(*g.assumed_gamma))
+                fail(at, "`assumed_gamma` must be a positive number, found " + format_number(*g.assumed_gamma));
         } else if (w == "ambient_light") {
             g.ambient_light = to_color(parse_expression_for("the ambient light colour")).rgb;
         } else if (w == "adc_bailout") {
