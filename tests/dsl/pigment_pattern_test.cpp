@@ -81,6 +81,25 @@ TEST_CASE("the built material evaluates the pattern where light meets it", "[dsl
     CHECK(b.built->scene.material_of(0).is_textured());
 }
 
+TEST_CASE("hexagon's three listed colours, or POV-Ray's defaults, are picked cell by cell without a warning",
+          "[dsl][texture]") {
+    const PatternScene b = build_patterned(
+        "plane { y, 0 pigment { hexagon rgb 0.2, rgb 0.4, rgb 0.8 } finish { ambient 0 diffuse 1 } }\n"
+        "plane { y, -1 pigment { hexagon rgb 0.2 } finish { ambient 0 diffuse 1 } }\n");  // 2 of 3 defaulted
+    INFO(all_messages(b.warnings));
+    CHECK(b.warnings.empty());
+    // Points inside each colour's cells (POV-Ray: 0 at the origin's hexagon, 1 above it, 2 beside it).
+    const double shown[3] = {0.2, 0.4, 0.8};
+    const Vec3<double> at[3] = {{0.1, 0, 0.1}, {0.1, 0, 1.0}, {0.9, 0, 0.6}};
+    for (int c = 0; c < 3; ++c) CHECK(albedo(b, 0, at[c]) == Rgb<double>(shown[photon::pattern_detail::hexagon_colour(at[c].x, at[c].z)]));
+    CHECK(photon::pattern_detail::hexagon_colour(0.1, 0.1) == 0);
+    CHECK(photon::pattern_detail::hexagon_colour(0.1, 1.0) == 1);
+    CHECK(photon::pattern_detail::hexagon_colour(0.9, 0.6) == 2);
+    CHECK(albedo(b, 1, {0.1, -1, 0.1}) == Rgb<double>(0.2));       // written
+    CHECK(albedo(b, 1, {0.1, -1, 1.0}) == Rgb<double>(0, 1, 0));   // POV-Ray's default second colour, green
+    CHECK(albedo(b, 1, {0.9, -1, 0.6}) == Rgb<double>(1, 0, 0));   // and third, red
+}
+
 TEST_CASE("a texture moves with the transformations written after it, as in POV-Ray", "[dsl][texture]") {
     const PatternScene b = build_patterned(
         "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } translate x }\n"  // moved

@@ -139,6 +139,28 @@ TEMPLATE_TEST_CASE("every pattern matches POV-Ray 3.7's value at six points", "[
     }
 }
 
+TEST_CASE("hexagon picks POV-Ray 3.7's colour on a grid over all four quadrants", "[texture]") {
+    struct HexagonSample {
+        double x, z;
+        int colour;
+    };
+    const HexagonSample pov_hexagon[] = {
+#include "pov_hexagon_values.inc"
+    };
+    int seen[3] = {0, 0, 0};
+    for (const HexagonSample& h : pov_hexagon) {
+        INFO("x " << h.x << ", z " << h.z);
+        CHECK(pattern_detail::hexagon_colour(h.x, h.z) == h.colour);
+        ++seen[h.colour];
+    }
+    CHECK((seen[0] > 100 && seen[1] > 100 && seen[2] > 100));  // the grid crosses every colour often
+    // Through the scene language's path: the three listed colours at 0, 1/2 and 1 of the map.
+    const Pigment<double> pigment(Pattern::of(PatternKind::hexagon),
+                                  ColorMap<double>({{0.0, Rgb<double>(0.1)}, {0.5, Rgb<double>(0.4)}, {1.0, Rgb<double>(0.9)}}));
+    const double listed[3] = {0.1, 0.4, 0.9};
+    for (const HexagonSample& h : pov_hexagon) CHECK(pigment(Vec3<double>(h.x, 7.0, h.z)).x == listed[h.colour]);
+}
+
 TEST_CASE("noise stays in [0, 1] and is continuous across lattice cells", "[texture]") {
     for (auto g : {NoiseGenerator::original, NoiseGenerator::range_corrected, NoiseGenerator::perlin}) {
         double lo = 1, hi = 0;

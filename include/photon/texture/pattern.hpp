@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // POV-Ray 3.7's pigment patterns: a pattern maps a point of its own space to a value in [0, 1]
-// (checker to 0 or 1) that then picks a colour from a color_map. Each pattern is POV-Ray's formula
+// (checker to 0 or 1, hexagon to 0, 1/2 or 1) that then picks a colour from a color_map. Each pattern is POV-Ray's formula
 // (source/backend/pattern/pattern.cpp, 3.7.0.10), with its turbulence and wave.
 
 #include <array>
@@ -16,7 +16,7 @@ namespace photon {
 
 enum class PatternKind : std::uint8_t {
     checker, gradient, bozo, spotted, granite, marble, wood, agate, onion, leopard, radial, ripples, waves,
-    spherical, planar, boxed, cylindrical
+    spherical, planar, boxed, cylindrical, hexagon
 };
 
 /// One pattern with its modifiers, in POV-Ray's meaning and with its defaults.
@@ -39,8 +39,11 @@ struct Pattern {
         return p;
     }
     [[nodiscard]] bool has_turbulence() const noexcept { return turbulence != Vec3<double>(0.0); }
-    /// Patterns whose value is one of a few discrete ones (checker: 0 or 1); they take no wave.
-    [[nodiscard]] bool is_discrete() const noexcept { return kind == PatternKind::checker; }
+    /// Patterns whose value is one of a few discrete ones (checker: 0 or 1; hexagon: 0, 1/2 or 1,
+    /// its three colours); they take no wave.
+    [[nodiscard]] bool is_discrete() const noexcept {
+        return kind == PatternKind::checker || kind == PatternKind::hexagon;
+    }
 };
 
 namespace pattern_detail {
@@ -60,6 +63,37 @@ struct WaveSources {
 inline const WaveSources& wave_sources() noexcept {
     static const WaveSources sources;
     return sources;
+}
+
+/// POV-Ray's hexagon: a tiling of the x-z plane by regular hexagons of unit edge-to-edge width
+/// along x, in three colours so that no two neighbours share one; 0, 1 or 2 (HexagonPattern::
+/// Evaluate). The plane is cut into half-triangle blocks of 0.5 by sqrt(3)/2, repeating every 6
+/// blocks each way; 4 of each 6 columns of blocks lie inside one hexagon, the other 2 are split
+/// by a hexagon's slanted edge. POV-Ray mirrors x (|x|) and shifts negative z by one period
+/// (5.196152424) so the tiling does not mirror across the x axis; kept for the same picture.
+inline int hexagon_colour(double x, double z) noexcept {
+    x = std::fabs(x);
+    z = z < 0.0 ? 5.196152424 - std::fabs(z) : z;
+    double xs = x / 0.5, zs = z / 0.866025404;
+    xs -= std::floor(xs / 6.0) * 6.0;
+    zs -= std::floor(zs / 6.0) * 6.0;
+    const int xm = int(std::floor(xs)) % 6, zm = int(std::floor(zs)) % 6;
+    switch (xm) {
+    case 0:
+    case 5: return zm == 0 || zm == 5 ? 0 : zm <= 2 ? 1 : 2;
+    case 2:
+    case 3: return zm <= 1 ? 2 : zm <= 3 ? 0 : 1;
+    default: {  // 1, 4: the block is split by a diagonal edge
+        double xl = xs - xm;
+        const double zl = zs - zm;
+        if ((xm + zm) % 2 == 1) xl = 1.0 - xl;  // a negative slope, flipped
+        if (xl == 0.0) xl = 0.0001;              // POV-Ray's guard against the division
+        const bool below = zl / xl < 1.0;
+        const int row = zm % 3;                  // zm 0/3, 1/4, 2/5 behave alike
+        if (below) return row == 0 ? 0 : row == 2 ? 1 : 2;
+        return row == 0 ? 2 : row == 2 ? 0 : 1;
+    }
+    }
 }
 
 /// The pattern's formula before its wave, at a point already turbulence-warped.
@@ -131,6 +165,7 @@ inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_e
     case PatternKind::boxed:
         return std::clamp(1.0 - std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}), 0.0, 1.0);
     case PatternKind::cylindrical: return std::clamp(1.0 - std::sqrt(p.x * p.x + p.z * p.z), 0.0, 1.0);
+    case PatternKind::hexagon: return 0.5 * hexagon_colour(p.x, p.z);
     }
     return 0.0;
 }
@@ -138,7 +173,8 @@ inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_e
 }  // namespace pattern_detail
 
 /// The pattern's value at `p` (in the pattern's own space): POV-Ray's turbulence warp, its
-/// formula, then frequency, phase and wave (not for checker, whose 0 and 1 pick list entries).
+/// formula, then frequency, phase and wave (not for checker and hexagon, whose values pick list
+/// entries).
 /// `cell_epsilon`: a point this close below a cell boundary of checker counts as inside the cell
 /// above (POV-Ray's 1e-10), so that a floor at y = 0 does not flicker between two cells with the
 /// rounding error of its hit points; single-precision hit points need a larger one (Pigment).

@@ -102,7 +102,8 @@ struct Transform {
 /// The patterns whose values photon evaluates at each point (the rest are averaged with a warning).
 inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient", "bozo",   "spotted", "granite",   "marble",
                                                      "wood",    "agate",    "onion",  "leopard", "radial",    "ripples",
-                                                     "waves",   "spherical", "planar", "boxed",  "cylindrical"};
+                                                     "waves",   "spherical", "planar", "boxed",  "cylindrical",
+                                                     "hexagon"};
 
 /// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).
@@ -117,7 +118,7 @@ struct PigmentPattern {
     std::string wave;                ///< `ramp_wave`, `sine_wave`, ...; empty: the pattern's default
     double frequency = 1, phase = 0, exponent = 1;
     /// The colours the value picks: the color_map as written, POV-Ray's default map, or for
-    /// checker its two colours at 0 and 1.
+    /// checker its two colours at 0 and 1, for hexagon its three at 0, 1/2 and 1.
     std::vector<std::pair<double, Color>> colors;
 
     friend bool operator==(const PigmentPattern&, const PigmentPattern&) = default;

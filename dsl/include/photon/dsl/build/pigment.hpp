@@ -21,7 +21,7 @@ namespace photon::dsl {
         {"wood", PatternKind::wood},           {"agate", PatternKind::agate},       {"onion", PatternKind::onion},
         {"leopard", PatternKind::leopard},     {"radial", PatternKind::radial},     {"ripples", PatternKind::ripples},
         {"waves", PatternKind::waves},         {"spherical", PatternKind::spherical}, {"planar", PatternKind::planar},
-        {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}};
+        {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}, {"hexagon", PatternKind::hexagon}};
     for (const auto& [n, k] : kinds)
         if (name == n) return k;
     throw std::invalid_argument("photon does not evaluate the pattern `" + name + "`");

@@ -40,11 +40,13 @@ inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const Pat
     }
     PigmentPattern p = st.base && st.base->name == name ? *st.base : PigmentPattern{};
     p.name = name;
-    if (name == "checker") {
+    if (name == "checker" || name == "hexagon") {
+        // The listed colours, spread over [0, 1] where the pattern's values pick them.
         if (!st.listed.empty() || !st.base) {
             std::vector<Color> colors = default_listed_colors(name);
             for (std::size_t i = 0; i < st.listed.size() && i < colors.size(); ++i) colors[i] = st.listed[i];
-            p.colors = {{0.0, colors[0]}, {1.0, colors[1]}};
+            p.colors.clear();
+            for (std::size_t i = 0; i < colors.size(); ++i) p.colors.push_back({double(i) / double(colors.size() - 1), colors[i]});
         }
     } else if (st.map) {
         p.colors = st.map->entries;
