@@ -108,19 +108,18 @@ TEST_CASE("listed patterns are approximated by the mean of their colours", "[dsl
     check_rgb(first_color("pigment { checker color rgb <1, 0, 0> color rgb <0, 0, 1> scale 0.5 }"), 0.5, 0, 0.5);
     check_rgb(first_color("pigment { checker }"), 0, 0.5, 0.5);  // POV-Ray's blue and green
     check_rgb(first_color("pigment { checker pigment { rgb 1 } pigment { checker rgb 1, rgb 0 } }"), 0.75, 0.75, 0.75);
-    check_rgb(first_color("pigment { hexagon rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1> }"), 1.0 / 3, 1.0 / 3,
-              1.0 / 3);
+    check_rgb(first_color("pigment { square rgb <1, 0, 0>, rgb <0, 1, 0>, rgb <0, 0, 1>, rgb 1 }"), 0.5, 0.5, 0.5);
     // Mortar 0.5 between bricks of 8 x 3 x 4.5: the bricks are 7.5 * 2.5 * 4 / 108 of the volume.
     const double brick = 7.5 * 2.5 * 4 / 108;
     check_rgb(first_color("pigment { brick rgb 1, rgb 0 }"), 1 - brick, 1 - brick, 1 - brick);
     check_rgb(first_color("pigment { brick rgb 0, rgb 1 brick_size <1, 1, 1> mortar 0.5 }"), 0.125, 0.125, 0.125);
     const Parsed p = parse(std::string(lit) +
-                           "plane { y, 0 pigment { hexagon rgb 1, rgb 0, rgb 0.5 } }\n"
+                           "plane { y, 0 pigment { square rgb 1, rgb 0, rgb 0.5, rgb 0.5 } }\n"
                            "plane { y, 0 pigment { checker rgb 1, rgb 0 } }\n"
                            "plane { y, 0 pigment { checker pigment { rgb 1 } pigment { bozo } } }\n");
-    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:24 hexagon", "5:24 checker"});
+    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:24 square", "5:24 checker"});
     CHECK_THAT(all_messages(p.warnings),
-               Contains("`hexagon` is approximated by the mean of its 3 colours, rgb <0.5, 0.5, 0.5>: photon does not "
+               Contains("`square` is approximated by the mean of its 4 colours, rgb <0.5, 0.5, 0.5>: photon does not "
                         "evaluate this pattern"));
     CHECK_THAT(all_messages(p.warnings), Contains("its entries are patterned pigments, which photon does not nest"));
 }
@@ -259,8 +258,8 @@ TEST_CASE("every form of normal parses, and those photon cannot evaluate are ign
 TEST_CASE("photon's own warnings about what it renders differently carry a kind", "[dsl][degradation]") {
     // Every warning of these constructs has its kind and keyword for the summary of `photon check`.
     const Parsed b = parse(std::string(lit) +
-                           "fog { distance 1 } superellipsoid { <1, 1> } sphere { 0, 1 pigment { crackle } "
-                           "normal { crackle 1 } }\n");
+                           "fog { distance 1 } superellipsoid { <1, 1> } sphere { 0, 1 pigment { quilted } "
+                           "normal { quilted 1 } }\n");
     INFO(all_messages(b.warnings));
     REQUIRE(b.warnings.size() == 4);
     for (const auto& w : b.warnings) {

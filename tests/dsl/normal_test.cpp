@@ -121,12 +121,12 @@ TEST_CASE("the slope of a pigment pattern and its modifiers build the library's 
 
 TEST_CASE("normals photon cannot evaluate are ignored with a warning at the pattern", "[dsl][normal]") {
     const auto b = build_normals(
-        "sphere { 0, 1 normal { crackle 0.5 } }\n"
+        "sphere { 0, 1 normal { quilted 0.5 } }\n"
         "sphere { 0, 1 normal { bumps 0.5 warp { turbulence 0.2 } } }\n"
         "sphere { 0, 1 normal { bumps no_bump_scale } }\n");
     const auto ignored = places(b.warnings, "ignored effect");
     CHECK(ignored == std::vector<std::string>{"4:24 normal", "5:24 normal"});
-    CHECK_THAT(all_messages(b.warnings), Contains("`normal { crackle }` is ignored: photon does not evaluate this pattern"));
+    CHECK_THAT(all_messages(b.warnings), Contains("`normal { quilted }` is ignored: photon does not evaluate this pattern"));
     CHECK_THAT(all_messages(b.warnings), Contains("`normal { bumps }` is ignored: photon does not evaluate `warp` (at"));
     CHECK_THAT(all_messages(b.warnings), Contains("`no_bump_scale` is ignored"));
     CHECK_FALSE(b.scene.material_of(0).has_normal_field());

@@ -100,6 +100,30 @@ TEST_CASE("hexagon's three listed colours, or POV-Ray's defaults, are picked cel
     CHECK(albedo(b, 1, {0.9, -1, 0.6}) == Rgb<double>(1, 0, 0));   // and third, red
 }
 
+TEST_CASE("crackle and cells are evaluated with crackle's form, metric, offset and solid, without a warning",
+          "[dsl][texture]") {
+    const PatternScene b = build_patterned(
+        "plane { y, 0 pigment { crackle form <0.3, 0.6, -0.4> metric 1 offset 0.2 color_map { [0 rgb 0] [1 rgb 1] } } "
+        "finish { ambient 0 diffuse 1 } }\n"
+        "plane { y, -1 pigment { cells color_map { [0 rgb 0] [1 rgb 1] } } finish { ambient 0 diffuse 1 } }\n"
+        "plane { y, -2 pigment { crackle solid color_map { [0 rgb 0] [1 rgb 1] } } finish { ambient 0 diffuse 1 } }\n");
+    INFO(all_messages(b.warnings));
+    CHECK(b.warnings.empty());
+    photon::CrackleParams c;
+    c.form = {0.3, 0.6, -0.4};
+    c.metric = 1;
+    c.offset = 0.2;
+    photon::CrackleParams solid;
+    solid.solid = true;
+    for (const Vec3<double>& q : {Vec3<double>(0.3, 0, 0.7), Vec3<double>(-2.1, 0, 5.4), Vec3<double>(7.7, 0, -0.2)}) {
+        CHECK(albedo(b, 0, q).x == Approx(photon::crackle_value(q, c)));
+        CHECK(albedo(b, 1, q - Vec3<double>(0, 1, 0)).x == Approx(photon::cells_value(q - Vec3<double>(0, 1, 0))));
+        CHECK(albedo(b, 2, q - Vec3<double>(0, 2, 0)).x == Approx(photon::crackle_value(q - Vec3<double>(0, 2, 0), solid)));
+    }
+    CHECK_THROWS_WITH(build_patterned("plane { y, 0 pigment { crackle metric 0 } }\n"),
+                      Contains("test.pov:3:") && Contains("crackle's `metric` must be positive, found 0"));
+}
+
 TEST_CASE("a texture moves with the transformations written after it, as in POV-Ray", "[dsl][texture]") {
     const PatternScene b = build_patterned(
         "sphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 diffuse 1 } translate x }\n"  // moved
@@ -134,8 +158,8 @@ TEST_CASE("what photon cannot evaluate is averaged with a warning that says why"
     const Parsed p = parse(std::string(pattern_stage) +
                            "sphere { 0, 1 pigment { bozo warp { turbulence 0.5 } } }\n"
                            "sphere { 0, 1 pigment { gradient x uv_mapping } }\n"
-                           "sphere { 0, 1 pigment { crackle } }\n");
-    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:25 bozo", "4:25 gradient", "5:25 crackle"});
+                           "sphere { 0, 1 pigment { quilted } }\n");
+    CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"3:25 bozo", "4:25 gradient", "5:25 quilted"});
     CHECK_THAT(all_messages(p.warnings), Contains("photon does not evaluate `warp` (at 3:30)"));
     CHECK_THAT(all_messages(p.warnings), Contains("photon does not evaluate `uv_mapping`"));
     for (std::size_t i = 1; i <= 3; ++i) CHECK_FALSE(p.desc.objects.at(i).texture->pigment.pattern);
@@ -156,7 +180,9 @@ TEST_CASE("export-pov writes a pattern back, and reading it gives the same patte
                            "sphere { 0, 1 pigment { wood turbulence <0.1, 0.2, 0> octaves 3 frequency 2 cubic_wave "
                            "color_map { [0 rgb 1] [0.5 rgb <1, 0, 0>] } rotate x * 90 scale 0.2 } "
                            "finish { ambient 0 } translate <1, 2, 3> }\n"
-                           "box { 0, 1 pigment { checker rgb 1, rgb 0 } }\n");
+                           "box { 0, 1 pigment { checker rgb 1, rgb 0 } }\n"
+                           "box { 0, 1 pigment { crackle form <0.3, 0.6, -0.4> metric 3 offset 0.1 solid scale 0.5 } }\n"
+                           "box { 0, 1 pigment { hexagon rgb 0.1, rgb 0.2, rgb 0.3 } }\n");
     const std::string pov = dsl::export_pov(p.desc);
     INFO(pov);
     const Parsed q = parse(pov);

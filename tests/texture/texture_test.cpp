@@ -112,6 +112,34 @@ template <Scalar S> Pigment<S> pigment_named(const std::string& name) {
                                                   .then(Affine<double>::translate({0.3, -1, 2}));
              return Pigment<S>(with(K::granite), ramp<S>(), placement);
          }},
+        {"cells", [] { return Pigment<S>(with(K::cells), ramp<S>()); }},
+        {"crackle", [] { return Pigment<S>(with(K::crackle), ramp<S>()); }},
+        {"crackle scaled",
+         [] { return Pigment<S>(with(K::crackle), ramp<S>(), Affine<double>::scale(Vec3<double>(0.37))); }},
+        {"crackle form", [] {
+             return Pigment<S>(with(K::crackle, [](Pattern& p) { p.crackle.form = {0.3, 0.6, -0.4}; }), ramp<S>(),
+                               Affine<double>::scale(Vec3<double>(0.5)));
+         }},
+        {"crackle metric 1 offset", [] {
+             return Pigment<S>(with(K::crackle,
+                                    [](Pattern& p) {
+                                        p.crackle.metric = 1;
+                                        p.crackle.offset = 0.2;
+                                    }),
+                               ramp<S>(), Affine<double>::scale(Vec3<double>(0.5)));
+         }},
+        {"crackle metric 3", [] {
+             return Pigment<S>(with(K::crackle,
+                                    [](Pattern& p) {
+                                        p.crackle.metric = 3;
+                                        p.crackle.form = {1, 0, 0};
+                                    }),
+                               ramp<S>());
+         }},
+        {"crackle solid", [] {
+             return Pigment<S>(with(K::crackle, [](Pattern& p) { p.crackle.solid = true; }), ramp<S>(),
+                               Affine<double>::scale(Vec3<double>(0.3)));
+         }},
         {"color_map", [] {
              return Pigment<S>(with(K::gradient), ColorMap<S>({{0.2, Rgb<S>(S(0.1))},
                                                                {0.5, Rgb<S>(S(0.9))},

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "../math/vec.hpp"
+#include "crackle.hpp"
 #include "noise.hpp"
 #include "wave.hpp"
 
@@ -16,7 +17,7 @@ namespace photon {
 
 enum class PatternKind : std::uint8_t {
     checker, gradient, bozo, spotted, granite, marble, wood, agate, onion, leopard, radial, ripples, waves,
-    spherical, planar, boxed, cylindrical, hexagon
+    spherical, planar, boxed, cylindrical, hexagon, cells, crackle
 };
 
 /// One pattern with its modifiers, in POV-Ray's meaning and with its defaults.
@@ -24,6 +25,7 @@ struct Pattern {
     PatternKind kind = PatternKind::checker;
     Vec3<double> gradient{1, 0, 0};  ///< `gradient` direction (its length does not matter: normalized, as POV-Ray does)
     double agate_turb = 1.0;         ///< `agate_turb`
+    CrackleParams crackle{};         ///< `form`, `metric`, `offset`, `solid` of crackle
     /// `turbulence`: displaces the point by dturbulence * amount before the pattern (marble and
     /// wood instead use it in their own formula, as POV-Ray does). Zero: no turbulence.
     Vec3<double> turbulence{0.0};
@@ -166,6 +168,8 @@ inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_e
         return std::clamp(1.0 - std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)}), 0.0, 1.0);
     case PatternKind::cylindrical: return std::clamp(1.0 - std::sqrt(p.x * p.x + p.z * p.z), 0.0, 1.0);
     case PatternKind::hexagon: return 0.5 * hexagon_colour(p.x, p.z);
+    case PatternKind::cells: return cells_value(p);
+    case PatternKind::crackle: return crackle_value(p, pat.crackle, pat.noise_generator);
     }
     return 0.0;
 }

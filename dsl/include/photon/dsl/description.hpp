@@ -103,7 +103,7 @@ struct Transform {
 inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient", "bozo",   "spotted", "granite",   "marble",
                                                      "wood",    "agate",    "onion",  "leopard", "radial",    "ripples",
                                                      "waves",   "spherical", "planar", "boxed",  "cylindrical",
-                                                     "hexagon"};
+                                                     "hexagon", "cells",  "crackle"};
 
 /// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).
@@ -111,6 +111,9 @@ struct PigmentPattern {
     std::string name;                ///< one of evaluated_patterns
     Vector3 gradient{1, 0, 0};       ///< `gradient V`
     double agate_turb = 1;           ///< `agate_turb`
+    Vector3 crackle_form{-1, 1, 0};  ///< crackle's `form`
+    double crackle_metric = 2, crackle_offset = 0;
+    bool crackle_solid = false;
     Vector3 turbulence{0.0};         ///< `turbulence`
     int octaves = 6;
     double omega = 0.5, lambda = 2;

@@ -163,8 +163,8 @@ private:
     void pigment_pattern(const PigmentPattern& p, const Transform& placement) {
         out_ << "pigment { " << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
-        if (p.name == "checker") {
-            out_ << ' ' << rgbft(p.colors[0].second) << ", " << rgbft(p.colors[1].second);
+        if (p.name == "checker" || p.name == "hexagon") {  // listed colours
+            for (std::size_t i = 0; i < p.colors.size(); ++i) out_ << (i ? ", " : " ") << rgbft(p.colors[i].second);
         } else {
             out_ << " color_map {";
             for (const auto& [v, c] : p.colors) out_ << " [" << num(v) << ' ' << rgbft(c) << ']';
@@ -183,6 +183,10 @@ private:
         if (p.omega != pov.omega) out_ << " omega " << num(p.omega);
         if (p.lambda != pov.lambda) out_ << " lambda " << num(p.lambda);
         if (p.agate_turb != pov.agate_turb) out_ << " agate_turb " << num(p.agate_turb);
+        if (p.crackle_form != pov.crackle_form) out_ << " form " << vec(p.crackle_form);
+        if (p.crackle_metric != pov.crackle_metric) out_ << " metric " << num(p.crackle_metric);
+        if (p.crackle_offset != pov.crackle_offset) out_ << " offset " << num(p.crackle_offset);
+        if (p.crackle_solid) out_ << " solid";
         if (p.noise_generator != pov.noise_generator) out_ << " noise_generator " << p.noise_generator;
         if (p.frequency != pov.frequency) out_ << " frequency " << num(p.frequency);
         if (p.phase != pov.phase) out_ << " phase " << num(p.phase);

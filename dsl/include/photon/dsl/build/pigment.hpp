@@ -21,7 +21,8 @@ namespace photon::dsl {
         {"wood", PatternKind::wood},           {"agate", PatternKind::agate},       {"onion", PatternKind::onion},
         {"leopard", PatternKind::leopard},     {"radial", PatternKind::radial},     {"ripples", PatternKind::ripples},
         {"waves", PatternKind::waves},         {"spherical", PatternKind::spherical}, {"planar", PatternKind::planar},
-        {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}, {"hexagon", PatternKind::hexagon}};
+        {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}, {"hexagon", PatternKind::hexagon},
+        {"cells", PatternKind::cells},         {"crackle", PatternKind::crackle}};
     for (const auto& [n, k] : kinds)
         if (name == n) return k;
     throw std::invalid_argument("photon does not evaluate the pattern `" + name + "`");
@@ -44,6 +45,7 @@ namespace photon::dsl {
 [[nodiscard]] inline Pattern with_modifiers(Pattern out, const PigmentPattern& p) {
     out.gradient = p.gradient;
     out.agate_turb = p.agate_turb;
+    out.crackle = {.form = p.crackle_form, .metric = p.crackle_metric, .offset = p.crackle_offset, .solid = p.crackle_solid};
     out.turbulence = p.turbulence;
     out.octaves = {.octaves = p.octaves, .omega = p.omega, .lambda = p.lambda};
     if (p.noise_generator != 0) out.noise_generator = NoiseGenerator(p.noise_generator);

@@ -44,6 +44,9 @@ struct Parser::PatternState {
     std::optional<Vector3> gradient, turbulence;
     std::optional<int> octaves, noise_generator;
     std::optional<double> omega, lambda, frequency, phase, agate_turb, exponent;
+    std::optional<Vector3> form;             ///< crackle's `form`
+    std::optional<double> metric, offset;    ///< crackle's `metric` and `offset`
+    bool solid = false;                      ///< crackle's `solid`
     std::string wave;                     ///< `sine_wave`, ... as written
     std::vector<Token> unsupported;       ///< modifiers photon does not evaluate (warp, uv_mapping, ...)
     bool reduced = false;  ///< a listed colour was itself patterned, and is reduced to its average
@@ -249,7 +252,12 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         else if (w == "frequency") st.frequency = n.at(0);
         else if (w == "phase") st.phase = n.at(0);
         else if (w == "agate_turb") st.agate_turb = n.at(0);
-        else st.unsupported.push_back(t);
+        else if (w == "form" && st.pattern.text == "crackle") st.form = v;
+        else if (w == "offset" && st.pattern.text == "crackle") st.offset = n.at(0);
+        else if (w == "metric" && st.pattern.text == "crackle") {
+            if (!(n.at(0) > 0)) fail(t.location, "crackle's `metric` must be positive, found " + format_number(n.at(0)));
+            st.metric = n.at(0);
+        } else st.unsupported.push_back(t);
     } else if ((w == "interior" || w == "exterior") && one_of(st.pattern.text, {"mandel", "julia", "magnet"})) {
         next();  // a fractal's colouring inside and outside the set: TYPE, FACTOR
         parse_float("the type of `" + w + "`");
@@ -262,7 +270,8 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
     } else if (one_of(w, bare_modifiers)) {
         next();
         if (w.ends_with("_wave")) st.wave = w;
-        else if (w != "solid") st.unsupported.push_back(t);  // solid: crackle's, never evaluated
+        else if (w == "solid") st.solid = st.solid || st.pattern.text == "crackle";  // crackle's; other patterns ignore it
+        else st.unsupported.push_back(t);
     } else if (w == "warp") {
         const Nest nest(*this, t.location);
         st.unsupported.push_back(t);

@@ -74,13 +74,18 @@ inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPatte
     if (st.agate_turb) p.agate_turb = *st.agate_turb;
     if (st.exponent) p.exponent = *st.exponent;
     if (!st.wave.empty()) p.wave = st.wave;
+    if (st.form) p.crackle_form = *st.form;
+    if (st.metric) p.crackle_metric = *st.metric;
+    if (st.offset) p.crackle_offset = *st.offset;
+    if (st.solid) p.crackle_solid = true;
     p.octaves = std::clamp(p.octaves, 1, 10);  // as POV-Ray's parser clamps it
 }
 
 /// Whether the body wrote any pattern modifier or map (to a declared pigment's pattern).
 inline bool Parser::modifies_pattern(const PatternState& st) {
     return st.map || st.gradient || st.turbulence || st.octaves || st.noise_generator || st.omega || st.lambda ||
-           st.frequency || st.phase || st.agate_turb || st.exponent || !st.wave.empty() || !st.unsupported.empty();
+           st.frequency || st.phase || st.agate_turb || st.exponent || !st.wave.empty() || !st.unsupported.empty() ||
+           st.form || st.metric || st.offset || st.solid;
 }
 
 /// The colour a pattern averages to: checker's two colours' mean, a map's average over [0, 1].
