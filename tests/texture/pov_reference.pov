@@ -50,3 +50,8 @@ Probe("crackle form", pigment { crackle form <0.3, 0.6, -0.4> scale 0.5 color_ma
 Probe("crackle metric 1 offset", pigment { crackle metric 1 offset 0.2 scale 0.5 color_map { Ramp } })
 Probe("crackle metric 3", pigment { crackle metric 3 form <1, 0, 0> color_map { Ramp } })
 Probe("crackle solid", pigment { crackle solid scale 0.3 color_map { Ramp } })
+Probe("bumps", pigment { bumps color_map { Ramp } })
+Probe("dents", pigment { dents scale 0.4 color_map { Ramp } })
+Probe("wrinkles", pigment { wrinkles color_map { Ramp } })
+Probe("wrinkles noise_generator 1", pigment { wrinkles noise_generator 1 scale 0.3 color_map { Ramp } })
+Probe("wrinkles noise_generator 3", pigment { wrinkles noise_generator 3 color_map { Ramp } })

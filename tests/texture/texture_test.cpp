@@ -140,6 +140,16 @@ template <Scalar S> Pigment<S> pigment_named(const std::string& name) {
              return Pigment<S>(with(K::crackle, [](Pattern& p) { p.crackle.solid = true; }), ramp<S>(),
                                Affine<double>::scale(Vec3<double>(0.3)));
          }},
+        {"bumps", [] { return Pigment<S>(with(K::bumps), ramp<S>()); }},
+        {"dents", [] { return Pigment<S>(with(K::dents), ramp<S>(), Affine<double>::scale(Vec3<double>(0.4))); }},
+        {"wrinkles", [] { return Pigment<S>(with(K::wrinkles), ramp<S>()); }},
+        {"wrinkles noise_generator 1", [] {
+             return Pigment<S>(with(K::wrinkles, [](Pattern& p) { p.noise_generator = NoiseGenerator::original; }),
+                               ramp<S>(), Affine<double>::scale(Vec3<double>(0.3)));
+         }},
+        {"wrinkles noise_generator 3", [] {
+             return Pigment<S>(with(K::wrinkles, [](Pattern& p) { p.noise_generator = NoiseGenerator::perlin; }), ramp<S>());
+         }},
         {"color_map", [] {
              return Pigment<S>(with(K::gradient), ColorMap<S>({{0.2, Rgb<S>(S(0.1))},
                                                                {0.5, Rgb<S>(S(0.9))},

@@ -17,7 +17,7 @@ namespace photon {
 
 enum class PatternKind : std::uint8_t {
     checker, gradient, bozo, spotted, granite, marble, wood, agate, onion, leopard, radial, ripples, waves,
-    spherical, planar, boxed, cylindrical, hexagon, cells, crackle
+    spherical, planar, boxed, cylindrical, hexagon, cells, crackle, bumps, dents, wrinkles
 };
 
 /// One pattern with its modifiers, in POV-Ray's meaning and with its defaults.
@@ -112,7 +112,23 @@ inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_e
         return r > 1.0 ? std::fmod(r, 1.0) : r;
     }
     case PatternKind::bozo:
-    case PatternKind::spotted: return pov_noise(p, pat.noise_generator);
+    case PatternKind::spotted:
+    case PatternKind::bumps: return pov_noise(p, pat.noise_generator);
+    case PatternKind::dents: {
+        const double n = pov_noise(p, pat.noise_generator);
+        return n * n * n;
+    }
+    case PatternKind::wrinkles: {
+        // Ten octaves of noise, each twice as fine and half as strong; generators 2 and 3 stretch
+        // each octave's noise to [-0.5, 1.5] and clamp it (WrinklesPattern, POV-Ray 3.7).
+        const auto octave = [&](const Vec3<double>& q) {
+            const double n = pov_noise(q, pat.noise_generator);
+            return pat.noise_generator == NoiseGenerator::original ? n : std::clamp(n * 2.0 - 0.5, 0.0, 1.0);
+        };
+        double value = octave(p), lambda = 2.0, omega = 0.5;
+        for (int i = 1; i < 10; ++i, lambda *= 2.0, omega *= 0.5) value += omega * octave(p * lambda);
+        return value / 2.0;
+    }
     case PatternKind::granite: {
         double value = 0, freq = 1;
         for (int i = 0; i < 6; ++i, freq *= 2.0) {

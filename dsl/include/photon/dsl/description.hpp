@@ -103,7 +103,7 @@ struct Transform {
 inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient", "bozo",   "spotted", "granite",   "marble",
                                                      "wood",    "agate",    "onion",  "leopard", "radial",    "ripples",
                                                      "waves",   "spherical", "planar", "boxed",  "cylindrical",
-                                                     "hexagon", "cells",  "crackle"};
+                                                     "hexagon", "cells",  "crackle", "bumps",  "dents",  "wrinkles"};
 
 /// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).

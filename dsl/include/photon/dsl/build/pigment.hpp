@@ -22,7 +22,8 @@ namespace photon::dsl {
         {"leopard", PatternKind::leopard},     {"radial", PatternKind::radial},     {"ripples", PatternKind::ripples},
         {"waves", PatternKind::waves},         {"spherical", PatternKind::spherical}, {"planar", PatternKind::planar},
         {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}, {"hexagon", PatternKind::hexagon},
-        {"cells", PatternKind::cells},         {"crackle", PatternKind::crackle}};
+        {"cells", PatternKind::cells},         {"crackle", PatternKind::crackle},   {"bumps", PatternKind::bumps},
+        {"dents", PatternKind::dents},         {"wrinkles", PatternKind::wrinkles}};
     for (const auto& [n, k] : kinds)
         if (name == n) return k;
     throw std::invalid_argument("photon does not evaluate the pattern `" + name + "`");
