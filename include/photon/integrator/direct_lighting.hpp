@@ -47,6 +47,7 @@ template <class SceneT, Scalar S>
     const Rgb<S> brdf = albedo * inv_pi<S>;
     const bool highlights = material.has_highlight();
     const Rgb<S> surface_color = highlights && material.params().metallic > S(0) ? material.highlight_color_at(x) : Rgb<S>(S(1));
+    const Rgb<S> highlight_weight = highlights ? material.highlight_weight_at(x) : Rgb<S>(S(0));
     const auto lights = scene.lights();
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (l < reaches.size() && !reaches[l]) continue;
@@ -85,7 +86,7 @@ template <class SceneT, Scalar S>
                 if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
             }
             Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
-            if (highlights) f += highlight(material, surface_color, n, wo, incident->direction);
+            if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
             sum += f * incident->irradiance;
         }
         total += sum / S(count);

@@ -123,6 +123,7 @@ private:
         const bool highlights = seen && material.has_highlight();
         const bool brilliance = seen && material.has_brilliance();
         const Rgb<S> surface_color = highlights && material.params().metallic > S(0) ? material.highlight_color_at(x) : Rgb<S>(S(1));
+        const Rgb<S> highlight_weight = highlights ? material.highlight_weight_at(x) : Rgb<S>(S(0));
         for (const Light<S>& light : scene_.lights()) {
             const auto sample = sample_light(light, x, ctx.rng.uniform2<S>());
             if (!sample) continue;
@@ -134,7 +135,7 @@ private:
             }
             const S weight = sample->delta || !mis_ || brilliance ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
             Rgb<S> f = brdf * ((brilliance ? diffuse_cosine(material, cos_theta) : cos_theta) * weight);
-            if (highlights) f += highlight(material, surface_color, n, wo, sample->direction);
+            if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, sample->direction);
             total += f * sample->radiance / sample->pdf;
         }
         return total;

@@ -52,6 +52,9 @@ template <Scalar S> struct MaterialParams {
     /// the diffuse texture's). A layered texture's layers weigh their colours by their own
     /// finishes, which differ between the diffuse and the ambient light.
     AnyReflectanceField<S> ambient_texture{};
+    /// Optional factor on the highlights at p (a layered texture's: its layers each add theirs,
+    /// dimmed by the layers above). Without it, 1.
+    AnyReflectanceField<S> highlight_texture{};
     /// Optional bumps: the shading normal at p is normal_field(p, geometric normal).
     AnyNormalField<S> normal_field{};
     /// What light loses per straight segment it travels inside the surface (clear by default).
@@ -112,6 +115,10 @@ public:
     /// The colour metallic highlights take at surface point `p`.
     [[nodiscard]] Rgb<S> highlight_color_at(const Vec3<S>& p) const {
         return params_.diffuse_texture ? params_.highlight_color * params_.diffuse_texture(p) : params_.highlight_color;
+    }
+    /// What the highlights at surface point `p` are multiplied by (1 without a highlight texture).
+    [[nodiscard]] Rgb<S> highlight_weight_at(const Vec3<S>& p) const {
+        return params_.highlight_texture ? params_.highlight_texture(p) : Rgb<S>(S(1));
     }
     /// True when direct light shows a highlight (phong or blinn).
     [[nodiscard]] bool has_highlight() const noexcept { return params_.phong > S(0) || params_.blinn > S(0); }
@@ -203,6 +210,7 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
     }
     check_rgb(p.ambient, "ambient", "radiance");
     if (p.ambient_texture) check_rgb(p.ambient_texture.upper_bound(), "the ambient texture's upper bound as", "radiance");
+    if (p.highlight_texture) check_rgb(p.highlight_texture.upper_bound(), "the highlight texture's upper bound as", "weight");
     check_rgb(p.highlight_color, "highlight", "colour");
     has_ambient_ = !is_black(p.ambient);
 }

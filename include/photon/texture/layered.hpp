@@ -162,4 +162,45 @@ private:
     Rgb<S> bound_{S(0)};
 };
 
+/// How much of the highlights a layered texture shows at a point, as POV-Ray lights each layer:
+/// every layer with a highlight adds it dimmed by what the layers above it let through (their
+/// passed(), POV-Ray's filCol), not by its own opacity. Exact for a stack whose highlighted
+/// layers share one highlight (the material's): the sum over them of the product above. A
+/// ReflectanceField (reflectance_field.hpp) that multiplies the material's highlights.
+template <Scalar S> class LayeredHighlightWeight {
+public:
+    /// `layers` bottom first; `highlighted[i]`: layer i has the highlight. Throws
+    /// std::invalid_argument when the sizes differ or no layer has one.
+    LayeredHighlightWeight(std::vector<PigmentLayer<S>> layers, std::vector<bool> highlighted)
+        : layers_(std::move(layers)), highlighted_(std::move(highlighted)) {
+        if (layers_.size() != highlighted_.size() || std::find(highlighted_.begin(), highlighted_.end(), true) == highlighted_.end())
+            throw std::invalid_argument("layered highlight: one flag per layer, at least one layer with a highlight");
+        // What a layer lets through is at most its largest passed() over its colours (a blend
+        // of two entries lies between them).
+        Rgb<S> through(S(1));
+        for (std::size_t i = layers_.size(); i-- > 0;) {
+            if (highlighted_[i]) bound_ += through;
+            Rgb<S> most(S(0));
+            for (const LayerColor<S>& c : layers_[i].entries()) most = glm::max(most, c.passed());
+            through *= most;
+        }
+    }
+
+    [[nodiscard]] Rgb<S> operator()(const Vec3<S>& p) const noexcept {
+        Rgb<S> sum(S(0)), through(S(1));
+        for (std::size_t i = layers_.size(); i-- > 0;) {
+            if (highlighted_[i]) sum += through;
+            through *= layers_[i](p).passed();
+            if (max_component(through) <= S(0)) break;
+        }
+        return sum;
+    }
+    [[nodiscard]] Rgb<S> upper_bound() const noexcept { return bound_; }
+
+private:
+    std::vector<PigmentLayer<S>> layers_;
+    std::vector<bool> highlighted_;
+    Rgb<S> bound_{S(0)};
+};
+
 }  // namespace photon

@@ -6,8 +6,9 @@
 // hold: the diffuse reflectance (each layer's colour times its finish's `diffuse`) and the glow
 // (times its `ambient` and `emission`). The rest comes from single layers, with a warning where
 // that differs from POV-Ray:
-// - highlights (phong, specular, metallic): the topmost layer that has one, at full strength
-//   (exact when that is the top layer and no other has one);
+// - highlights (phong, specular): exact when the layers that have one share it (each adds it,
+//   dimmed by the layers above: LayeredHighlightWeight); otherwise the topmost layer's, at full
+//   strength; a `metallic` highlight is the topmost layer's, coloured by the layers together;
 // - reflection: the topmost layer that reflects (exact when only one does: POV-Ray does not dim
 //   a layer's reflection by the layers above it);
 // - normal: the topmost layer's that has one (exact when every layer has the same one);
@@ -50,6 +51,10 @@ inline bool opaque_everywhere(const Texture& t) {
 }
 
 inline bool has_highlight(const Finish& f) { return f.phong > 0 || f.specular > 0; }
+inline bool same_highlight(const Finish& a, const Finish& b) {
+    return a.phong == b.phong && a.phong_size == b.phong_size && a.specular == b.specular && a.roughness == b.roughness &&
+           a.metallic == b.metallic;
+}
 inline bool reflects(const Finish& f) {
     return f.reflection && (f.reflection->max != Vector3(0.0) || f.reflection->min != Vector3(0.0));
 }
@@ -160,6 +165,16 @@ template <Scalar S>
         diffuse_layers.push_back(library_layer<S>(*t, to_world, Vector3(t->finish.diffuse), warn, pigment_place(*t)));
         glow_layers.push_back(library_layer<S>(*t, to_world, glow, warn, pigment_place(*t)));
     }
+    // Highlights: each layer that has one adds it dimmed by the layers above; exact as one
+    // weighted highlight when they all share it and none is metallic.
+    bool shared_highlight = highlight && stack[*highlight]->finish.metallic == 0;
+    std::vector<bool> highlighted;
+    for (const Texture* t : stack) {
+        highlighted.push_back(has_highlight(t->finish));
+        if (highlighted.back()) shared_highlight = shared_highlight && same_highlight(t->finish, stack[*highlight]->finish);
+    }
+    if (shared_highlight && (stack.size() > 1 || *highlight != top))
+        p.highlight_texture = AnyReflectanceField<S>(LayeredHighlightWeight<S>(diffuse_layers, highlighted));
     const LayeredPigment<S> diffuse(std::move(diffuse_layers));
     p.diffuse = Rgb<S>(S(1));
     p.diffuse_texture = AnyReflectanceField<S>(diffuse);
@@ -189,7 +204,7 @@ template <Scalar S>
     }
 
     // What photon approximates.
-    if (highlight) {
+    if (highlight && !shared_highlight) {
         std::vector<std::size_t> others;
         for (std::size_t i = 0; i < stack.size(); ++i)
             if (i != *highlight && has_highlight(stack[i]->finish)) others.push_back(i);
