@@ -54,3 +54,22 @@ TEST_CASE("object queries: bad arguments and a missing geometry are located erro
     CHECK_THROWS_WITH(parse("#declare S = sphere { 0, 1 }\nsphere { min_extent(S), 1 }"),
                       Contains("2:10: error: `min_extent` needs the object's geometry"));
 }
+
+TEST_CASE("bounded_by that holds the whole object changes nothing and says nothing, one that cuts it is reported",
+          "[dsl][geometry]") {
+    dsl::ParseOptions o;
+    o.geometry = dsl::library_object_geometry();
+    const auto p = parse("sphere { 0, 1 bounded_by { box { -1.01, 1.01 } } }\n"                      // 1: holds it
+                         "sphere { 0, 1 translate 5*x bounded_by { sphere { 5*x, 1.8 } } }\n"       // 2: after the move
+                         "sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }\n"                       // 3: cuts it
+                         "sphere { 0, 1 bounded_by { torus { 2, 1.5 } } }\n"                        // 4: not convex
+                         "sphere { 0, 1 clipped_by { plane { y, 0 } } bounded_by { clipped_by } }\n",  // 5: the clip
+                         o);
+    INFO(all_messages(p.warnings));
+    CHECK(places(p.warnings, "ignored effect") ==
+          std::vector<std::string>{"3:15 bounded_by", "4:15 bounded_by", "5:15 clipped_by"});
+    CHECK_THAT(all_messages(p.warnings), Contains("which photon could not rule out here"));
+    // Without the library's geometry the parser cannot tell, and says so.
+    const auto q = parse("sphere { 0, 1 bounded_by { box { -2, 2 } } }\n");
+    CHECK(places(q.warnings, "ignored effect") == std::vector<std::string>{"1:15 bounded_by"});
+}

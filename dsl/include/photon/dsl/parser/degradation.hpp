@@ -51,20 +51,30 @@ inline bool Parser::is_object_keyword(std::string_view w) const {
 }
 
 // BOUNDED_BY: bounded_by { OBJECT {OBJECT} | clipped_by }   CLIPPED_BY: clipped_by { OBJECT {OBJECT} | bounded_by }
-inline void Parser::parse_bound_or_clip(const Token& kw) {
+// `obj`: the object so far (the bound is written in its space at this point; later
+// transformations move both).
+inline void Parser::parse_bound_or_clip(const Token& kw, const Object& obj) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     const char* other = kw.text == "bounded_by" ? "clipped_by" : "bounded_by";
+    bool other_named = false;
+    std::vector<Object> objects;
     if (peek().is_identifier(other)) {
         next();
+        other_named = true;
     } else {
-        while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) parse_object(next());
+        while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) objects.push_back(parse_object(next()));
     }
     close_block(kw, std::string("an object or `") + other + "`");
-    if (kw.text == "bounded_by")
+    if (kw.text == "bounded_by") {
+        // POV-Ray only skips the rays that miss the bound: a bound that holds the whole object
+        // changes nothing (`bounded_by { clipped_by }` bounds by the clip, which clips anyway).
+        if (other_named) return;
+        if (bound_contains(obj, objects)) return;
         degrade(kw.location, degraded::ignored_effect, kw.text,
-                "`bounded_by` is ignored: photon bounds every object itself (the image does not change)");
-    else
+                "`bounded_by` is ignored: photon bounds every object itself; the image is the same unless the bound "
+                "cuts the object (POV-Ray then clips the object to it), which photon could not rule out here");
+    } else
         degrade(kw.location, degraded::ignored_effect, kw.text,
                 "`clipped_by` is ignored: photon renders the whole object, unclipped");
 }

@@ -126,6 +126,29 @@ inline Numeric Parser::parse_object_query(const Token& f) {
     return in != o.inverse;
 }
 
+/// Whether one of `bounds` is shown to hold the whole of `obj`: every corner of obj's bounding box
+/// inside one convex bound (a sphere, box, cylinder or cone, not inverse; convex, so its corners
+/// inside mean the box is), or obj has nothing photon renders (a skipped shape says so itself).
+/// False when that cannot be shown (a loose box, a bound of another shape, no library geometry).
+inline bool Parser::bound_contains(const Object& obj, const std::vector<Object>& bounds) const {
+    if (!options_.geometry) return false;
+    const ObjectGeometry::Bounds b = options_.geometry->bounds(obj);
+    if (!(b.min.x < b.max.x || b.min.y < b.max.y || b.min.z < b.max.z)) return true;  // nothing to bound
+    for (const Object& bound : bounds) {
+        const bool convex = !bound.inverse && (std::holds_alternative<SphereShape>(bound.shape) ||
+                                               std::holds_alternative<BoxShape>(bound.shape) ||
+                                               std::holds_alternative<CylinderShape>(bound.shape) ||
+                                               std::holds_alternative<ConeShape>(bound.shape));
+        if (!convex) continue;
+        bool all = true;
+        for (int c = 0; c < 8 && all; ++c)
+            all = object_contains(bound, Vector3(c & 1 ? b.max.x : b.min.x, c & 2 ? b.max.y : b.min.y,
+                                                 c & 4 ? b.max.z : b.min.z));
+        if (all) return true;
+    }
+    return false;
+}
+
 // INSIDE: inside ( OBJECT_ID , VECTOR )
 inline Numeric Parser::parse_inside(const Token& f) {
     expect_symbol("(", "after `inside`");

@@ -301,7 +301,7 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
             degrade(t.location, degraded::approximated_texture, w,
                     "`interior_texture` is ignored: photon uses one texture for both sides");
         } else if (w == "bounded_by" || w == "clipped_by") {
-            parse_bound_or_clip(next());
+            parse_bound_or_clip(next(), obj);
         } else if (is_object_keyword(w) &&
                    (std::holds_alternative<UnionShape>(obj.shape) || std::holds_alternative<CsgShape>(obj.shape))) {
             fail(t.location,

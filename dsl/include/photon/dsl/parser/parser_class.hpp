@@ -325,7 +325,8 @@ private:
                  const std::string& message);
     Object parse_skipped_object(const Token& kw);
     bool is_object_keyword(std::string_view w) const;
-    void parse_bound_or_clip(const Token& kw);
+    void parse_bound_or_clip(const Token& kw, const Object& obj);
+    bool bound_contains(const Object& obj, const std::vector<Object>& bounds) const;
     void skip_effect(const Token& kw);
 
     // patterns.hpp
