@@ -102,11 +102,23 @@ inline Vec3<double> cell_point(int x, int y, int z) {
         if (unity) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
         return std::pow(std::fabs(d.x), c.metric) + std::pow(std::fabs(d.y), c.metric) + std::pow(std::fabs(d.z), c.metric);
     };
+    // The 81 cell points around the point's cube, kept per thread for the next call in the same
+    // cube (POV-Ray caches them too): neighbouring pixels and photons mostly land in one cube.
+    struct Cache {
+        int x = 0, y = 0, z = 0;
+        bool valid = false;
+        std::array<Vec3<double>, 81> points;
+    };
+    thread_local Cache cache;
+    if (!cache.valid || cache.x != fx || cache.y != fy || cache.z != fz) {
+        const auto& cubes = neighbour_cubes();
+        for (std::size_t i = 0; i < 81; ++i)
+            cache.points[i] = cell_point(fx + cubes[i][0], fy + cubes[i][1], fz + cubes[i][2]);
+        cache.x = fx, cache.y = fy, cache.z = fz, cache.valid = true;
+    }
+    const std::array<Vec3<double>, 81>& points = cache.points;
     // The three smallest distances (d1 <= d2 <= d3) over the 81 cubes, in POV-Ray's order so
     // that ties pick the same nearest point.
-    const auto& cubes = neighbour_cubes();
-    std::array<Vec3<double>, 81> points;
-    for (std::size_t i = 0; i < 81; ++i) points[i] = cell_point(fx + cubes[i][0], fy + cubes[i][1], fz + cubes[i][2]);
     double d1 = distance(points[0] - p), d2 = distance(points[1] - p), d3 = distance(points[2] - p);
     std::size_t nearest = 0;
     if (d2 < d1) std::swap(d1, d2), nearest = 1;
