@@ -225,6 +225,10 @@ template <class SceneT>
     }
     bool lit = false;
     for (const auto& lp : plan.lights) lit = lit || lp.emits;
+    // The sky lights whatever it can reach from outside, and is never walled off from all of
+    // it: it counts as a light that emits (its photons go with the global pass).
+    const bool sky = scene.has_environment_light();
+    lit = lit || sky;
 
     // Surfaces.
     std::vector<std::uint32_t> diffuse, specular;
@@ -310,12 +314,14 @@ template <class SceneT>
     // Caustic pass, as render() runs it: aimed at the caustic targets, from the lights that emit.
     const std::vector<bool> emits = plan.light_emits();
     const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
-    const bool any_emits = [&] {
+    const bool lights_emit = [&] {
         for (std::size_t l = 0; l < lights.size(); ++l)
             if (emits[l] && max_component(light_power(lights[l])) > S(0)) return true;
         return false;
     }();
-    plan.caustic_pass = want_caustics && settings.caustic_photons > 0 && !aim.empty() && any_emits && !diffuse.empty();
+    const bool any_emits = lights_emit || sky;
+    // Only lights aim caustic photons: the sky's caustics come with the global pass.
+    plan.caustic_pass = want_caustics && settings.caustic_photons > 0 && !aim.empty() && lights_emit && !diffuse.empty();
     if (settings.caustic_photons > 0 && !plan.caustic_pass) {
         const std::string why = !plan.caustics.present ? plan.caustics.reason
                                 : aim.empty() && !unseen_caustics.empty()
@@ -331,7 +337,7 @@ template <class SceneT>
     const bool collect = want_caustics && plan.caustics.present;
     bool unaimed = collect && !plan.caustic_pass;
     for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
-    unaimed = unaimed || (collect && !unseen_caustics.empty());
+    unaimed = unaimed || (collect && !unseen_caustics.empty()) || (collect && sky);
     if (settings.caustic_photons > 0) {
         for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
         for (std::uint32_t i : unseen_caustics)
