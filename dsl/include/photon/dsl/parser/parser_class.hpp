@@ -327,7 +327,9 @@ private:
     bool is_object_keyword(std::string_view w) const;
     void parse_bound_or_clip(const Token& kw);
     void skip_effect(const Token& kw);
-    void parse_sky_sphere(const Token& kw);  // sky.hpp
+    // sky.hpp
+    void parse_sky_sphere(const Token& kw);
+    SkySphere parse_sky_sphere_block(const Token& kw);
 
     // patterns.hpp
     struct PatternState;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // POV-Ray's sky_sphere: pigments evaluated on the unit direction of a ray that leaves the scene,
-// which photon makes the sky light (build/sky.hpp).
+// which photon makes the sky light (build/sky.hpp). A declared one (`#declare S = sky_sphere
+// {...}`) is a value that `sky_sphere { S ... }` starts from.
 
 #include "degradation.hpp"
 #include "parser_class.hpp"
@@ -9,31 +10,19 @@
 namespace photon::dsl::detail {
 
 // SKY_SPHERE: sky_sphere { [SKY_SPHERE_IDENT] {pigment { PIGMENT_BODY } | emission COLOR | TRANSFORMATION} }
-inline void Parser::parse_sky_sphere(const Token& kw) {
+inline SkySphere Parser::parse_sky_sphere_block(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);
-    const Token first = peek();
-    if (first.kind == TokenKind::identifier) {
-        if (const Value* v = lookup(first.text); v && std::holds_alternative<IgnoredBlock>(v->data)) {
-            // A declared sky_sphere was skipped when declared (keywords.hpp): only its use is known.
-            for (int depth = 1; depth > 0;) {
-                const Token t = next();
-                if (t.kind == TokenKind::end_of_file)
-                    fail_expected("`}` to close `" + kw.text + "` (opened at " + position_in(kw.location, t.location) + ")", t);
-                if (t.is_symbol("{")) ++depth;
-                if (t.is_symbol("}")) --depth;
-            }
-            degrade(kw.location, degraded::ignored_effect, kw.text, "`" + kw.text + "` is ignored: " + effect_instead(kw.text));
-            return;
-        }
-    }
     SkySphere sky;
+    take_identifier(sky, "a sky_sphere identifier");  // a declared one, to add to
     sky.at = kw.location;
     for (;;) {
         const Token t = peek();
         if (t.is_symbol("}")) break;
         if (try_transform(sky.transform)) continue;
         if (t.is_identifier("pigment")) {
+            // The sky_sphere's transformations move every pigment, also those written after
+            // them (POV-Ray composes them into one transform of the sky, Transform_Skysphere).
             sky.pigments.push_back(parse_pigment(next(), Pigment{}));
             continue;
         }
@@ -45,7 +34,9 @@ inline void Parser::parse_sky_sphere(const Token& kw) {
         break;
     }
     close_block(kw, "a pigment, `emission` or a transformation", {"pigment", "emission"});
-    scene_.sky_sphere = std::move(sky);
+    return sky;
 }
+
+inline void Parser::parse_sky_sphere(const Token& kw) { scene_.sky_sphere = parse_sky_sphere_block(kw); }
 
 }  // namespace photon::dsl::detail
