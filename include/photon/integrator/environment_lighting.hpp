@@ -41,13 +41,13 @@ template <Scalar S>
 
 /// Radiance that the Lambertian reflectance `albedo` at a point with unit shading normal `n`
 /// (geometric normal `geometric_n`, same side; light from below it counts for nothing) reflects
-/// from the sky, by sky.shadow_samples stratified shadow rays from `shadow_origin`.
+/// from the sky, by `samples` stratified shadow rays from `shadow_origin` (0: sky.shadow_samples).
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> environment_lighting(const SceneT& scene, const Environment<S>& sky, const Vec3<S>& shadow_origin,
                                           const Vec3<S>& n, const Vec3<S>& geometric_n, const Rgb<S>& albedo,
-                                          ShadingContext& ctx) {
+                                          ShadingContext& ctx, unsigned samples = 0) {
     if (sky.is_black() || is_black(albedo)) return Rgb<S>(S(0));
-    const unsigned grid = strata_per_axis(sky.shadow_samples);
+    const unsigned grid = strata_per_axis(samples > 0 ? samples : sky.shadow_samples);
     const unsigned count = grid * grid;
     const Frame<S> frame = Frame<S>::from_normal(n);
     Rgb<S> sum(S(0));
