@@ -72,7 +72,7 @@ TEST_CASE("sky_sphere's layers compose as POV-Ray 3.7's, over the background", "
     check_sky(black, {0, 1, 0}, {0.5, 0.5, 0.5});
 }
 
-TEST_CASE("a declared sky_sphere is used by name and added to; a bad emission is an error", "[dsl][sky]") {
+TEST_CASE("a declared sky_sphere is used by name and added to, and a bad emission is an error", "[dsl][sky]") {
     const StagedScene b = build_sky("#declare Sky = sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }\n"
                                     "sky_sphere { Sky emission rgb 2 rotate <0, 0, 90> }\n");
     CHECK(places(b.warnings, "ignored effect").empty());
