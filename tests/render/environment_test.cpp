@@ -273,3 +273,24 @@ TEST_CASE("under a sky, pm and sppm agree with the path tracer block by block", 
                 CHECK(std::abs(ours - truth) <= std::max(4 * sigma, 0.03 * truth));
             }
 }
+
+TEST_CASE("the plan gives the sky its share of the global photons, by power", "[environment][plan]") {
+    DefaultScene<double> scene;
+    scene.add(Box<double>({-1, -0.1, -1}, {1, 0, 1}), scene.add_material(Material<double>::lambertian(Rgb<double>(0.5))));
+    scene.add(Sphere<double>({0, 0.5, 0}, 0.5), scene.add_material(Material<double>::lambertian(Rgb<double>(0.5))));
+    scene.set_environment(Environment<double>(Rgb<double>(1.0)));
+    scene.commit();
+    RenderSettings settings = sky_settings(RenderMode::pm);
+    settings.global_photons = 100'000;
+    const auto camera = PinholeCamera<double>::look_at({0, 1.5, -2.5}, {0, 0.2, 0}, {0, 1, 0}, 45, 4.0 / 3.0);
+    // The sky alone: every global photon is the sky's, and the plan says so.
+    const EffectsPlan alone = plan_effects(scene, camera, settings);
+    CHECK(alone.global_pass);
+    CHECK(alone.environment_photons == 100'000);
+    // Beside a point light of the sky's power into its ball (pi r^2 4 pi L): half each.
+    const double r = scene.environment_ball().radius;
+    scene.add_light(PointLight<double>{{0, 3, 0}, Rgb<double>(pi<double> * r * r * 4 * pi<double>)});
+    const EffectsPlan shared = plan_effects(scene, camera, settings);
+    CHECK(shared.environment_photons == 50'000);
+    CHECK(shared.lights.at(0).global_photons == 50'000);
+}
