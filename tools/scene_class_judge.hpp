@@ -52,6 +52,7 @@ inline constexpr SceneClass gallery[] = {
     {"nested-glass", false, false, 2048, 256},
     {"mirror-corridor", false, false, 14336, 256},
     {"window-room", false, false, 1536, 512},
+    {"sky-room", false, false, 1536, 512},
     {"scale-km", false, false, 512, 256},
     {"scale-mm", false, false, 512, 256},
     {"many-lights", true, false, 16, 16},

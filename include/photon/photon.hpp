@@ -49,6 +49,7 @@
 #include "texture/wave.hpp"
 
 #include "light/cone.hpp"
+#include "light/environment.hpp"
 #include "light/light.hpp"
 #include "light/point_light.hpp"
 #include "light/sphere_light.hpp"
@@ -72,6 +73,7 @@
 #include "integrator/boundary_probe.hpp"
 #include "integrator/direct_lighting.hpp"
 #include "integrator/effect_switches.hpp"
+#include "integrator/environment_lighting.hpp"
 #include "integrator/radiance.hpp"
 #include "integrator/reference_render.hpp"
 #include "integrator/render.hpp"

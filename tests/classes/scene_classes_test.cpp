@@ -74,6 +74,7 @@ constexpr KnownFailure known_failures[] = {
     {"nested-glass", "pm-direct", +0.113, "the caustics under the glass read from the global map"},
     {"window-room", "pm", +0.030, "at the edge of the tolerance, by less than the judge's largest block noise (1.1%)"},
     {"window-room", "pm-direct", -0.073, "the indirectly lit room read from 1 M photons directly"},
+    {"sky-room", "pm-direct", -0.116, "the sky's light in the room read from the global map directly (1 M photons, 1 in 20 inside)"},
     {"scale-km", "pm-direct", -0.088, "dark around the ball"},
     {"scale-mm", "pm-direct", -0.089, "dark around the ball"},
     {"mesh", "pm-direct", +0.163, "the global map read directly blurs light into the mesh's shadow"},
@@ -159,7 +160,7 @@ TEST_CASE("every scene class parses and builds without warnings and names its li
         po.diagnostics = [&](const dsl::Diagnostic& d) { warnings.push_back(d); };
         const auto built = dsl::load_scene<float>(class_path(c.name), po);
         CHECK(warnings.empty());  // the mirror plane too: it is aimed at through its mirror image
-        CHECK(!built.scene.lights().empty());
+        CHECK((!built.scene.lights().empty() || built.scene.has_environment_light()));  // sky-room: the sky alone
         std::ifstream file(class_path(c.name));
         const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
         CHECK(text.find("// Light paths: ") != std::string::npos);
@@ -181,6 +182,7 @@ TEST_CASE("scene class cone-light against the judge", "[classes][gallery]") { ju
 TEST_CASE("scene class nested-glass against the judge", "[classes][gallery]") { judge_scene_class(scene_class("nested-glass")); }
 TEST_CASE("scene class mirror-corridor against the judge", "[classes][gallery]") { judge_scene_class(scene_class("mirror-corridor")); }
 TEST_CASE("scene class window-room against the judge", "[classes][gallery]") { judge_scene_class(scene_class("window-room")); }
+TEST_CASE("scene class sky-room against the judge", "[classes][gallery]") { judge_scene_class(scene_class("sky-room")); }
 TEST_CASE("scene class scale-km against the judge", "[classes][gallery]") { judge_scene_class(scene_class("scale-km")); }
 TEST_CASE("scene class scale-mm against the judge", "[classes][gallery]") { judge_scene_class(scene_class("scale-mm")); }
 TEST_CASE("scene class many-lights against the judge", "[classes][gallery]") { judge_scene_class(scene_class("many-lights")); }

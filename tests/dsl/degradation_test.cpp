@@ -204,6 +204,7 @@ TEST_CASE("effects photon does not render are ignored with a warning", "[dsl][de
                                "rainbow { angle 42.5 width 5 distance 1e3 direction -z "
                                "color_map { [0 rgbt 1] [1 rgbt 1] } }\n"
                                "sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 rgb z] } } }\n"
+                               "background { rgb 1 }\n"
                                "media { scattering { 1, 0.1 } }\n"
                                "#declare F = fog { distance 5 }\n"
                                "fog { F }\n"
@@ -213,9 +214,10 @@ TEST_CASE("effects photon does not render are ignored with a warning", "[dsl][de
                                "clipped_by { plane { y, 0 } } }\n"
                                "global_settings { subsurface { samples 10, 10 } }\n");
     CHECK(places(b.warnings, "ignored effect") ==
-          std::vector<std::string>{"3:1 fog", "4:1 rainbow", "5:1 sky_sphere", "6:1 media", "8:1 fog",
-                                   "9:1 background", "10:34 media", "10:68 subsurface", "10:102 bounded_by",
-                                   "10:131 clipped_by", "11:19 subsurface"});
+          std::vector<std::string>{"3:1 fog", "4:1 rainbow", "7:1 media", "9:1 fog", "11:34 media",
+                                   "11:68 subsurface", "11:102 bounded_by", "11:131 clipped_by", "12:19 subsurface"});
+    CHECK(all_messages(b.warnings).find("sky_sphere") == std::string::npos);  // the sky is rendered
+    CHECK(all_messages(b.warnings).find("background") == std::string::npos);
     CHECK_THAT(all_messages(b.warnings), Contains("`fog` is ignored: photon renders without fog"));
     CHECK_THAT(all_messages(b.warnings), Contains("`clipped_by` is ignored: photon renders the whole object, unclipped"));
     CHECK(b.objects == 1);

@@ -2,7 +2,8 @@
 #pragma once
 // Direct light by shadow rays (paper, section 5.1): one ray per point light, n x n stratified
 // rays per sphere light, whose unoccluded estimate is exact and whose partial occlusion gives
-// soft shadows; none for a light that casts no shadows. POV-Ray's highlights and brilliance
+// soft shadows; none for a light that casts no shadows. The sky's direct light joins it
+// (environment_lighting.hpp). POV-Ray's highlights and brilliance
 // (highlight.hpp) are added here only, for direct light.
 
 #include <cmath>
@@ -14,16 +15,11 @@
 #include "../material/highlight.hpp"
 #include "../material/material.hpp"
 #include "../math/sampling.hpp"
+#include "environment_lighting.hpp"
 #include "separating_wall.hpp"
 #include "shading_context.hpp"
 
 namespace photon {
-
-/// n for an n x n grid with at least `samples` cells.
-[[nodiscard]] inline unsigned strata_per_axis(unsigned samples) noexcept {
-    const auto n = static_cast<unsigned>(std::ceil(std::sqrt(double(samples)) - 1e-9));
-    return n == 0 ? 1 : n;
-}
 
 /// Radiance reflected towards `wo` at the surface point `x` with unit shading normal `n` on the
 /// shaded side (a normal field's tilt, else the geometric normal), from every light, by shadow
@@ -37,12 +33,15 @@ namespace photon {
 /// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
 /// Lights with `reaches[l] == false` are skipped: the light-path plan proved that none of their
 /// light reaches a point the camera sees (walled off, or zero power), so their shadow rays
-/// would all add zero. Empty: every light is sampled.
+/// would all add zero. Empty: every light is sampled. The scene's sky, if any, adds its direct
+/// light (environment_lighting; Lambertian only) by `sky_samples` shadow rays, or by its own
+/// Environment::shadow_samples when 0.
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
                                      const Vec3<S>& n, const Vec3<S>& geometric_n, const Vec3<S>& wo,
                                      const Material<S>& material,
-                                     const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {}) {
+                                     const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {},
+                                     unsigned sky_samples = 0) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = albedo * inv_pi<S>;
     const bool highlights = material.has_highlight();
@@ -91,6 +90,9 @@ template <class SceneT, Scalar S>
         }
         total += sum / S(count);
     }
+    if constexpr (requires { scene.environment(); })
+        if (scene.has_environment_light() && material.has_diffuse())
+            total += environment_lighting(scene, *scene.environment(), shadow_origin, n, geometric_n, albedo, ctx, sky_samples);
     return total;
 }
 

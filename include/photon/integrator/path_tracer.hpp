@@ -11,6 +11,10 @@
 // glass that follow a diffuse vertex (caustics, L S+ D E) has one strategy only, the path's
 // continuation: it counts with weight 1, and it is found by chance, so it is noisy. Through
 // mirrors or glass a point light is never met: those caustics are missing (black).
+//
+// The sky (light/environment.hpp) is one more light with both strategies: a shadow ray drawn
+// as environment_lighting draws them (its density environment_direct_pdf), and the diffuse
+// continuation that leaves the scene. Camera and mirror rays that leave the scene see it.
 
 #include <limits>
 #include <string>
@@ -19,6 +23,7 @@
 #include "../light/light_sample.hpp"
 #include "../material/scatter.hpp"
 #include "direct_lighting.hpp"
+#include "environment_lighting.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
@@ -62,6 +67,7 @@ public:
         for (unsigned vertex = 0; vertex < max_vertices; ++vertex) {
             const auto surface = scene_.intersect(ray);
             if (arrival.kind != Arrival::unseen) result += throughput * lights_met(ray, surface, arrival, ctx);
+            result += throughput * sky_met(ray, surface, arrival, ctx);
             if (!surface) break;
             const Material<S>& material = *surface->material;
             const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
@@ -86,7 +92,8 @@ public:
             // alone counts it (weight 1), so the continuation gets no MIS share (density 0).
             if (s.event == ScatterEvent::diffuse)
                 arrival = {Arrival::diffuse, x,
-                           seen && material.has_brilliance() ? S(0) : pd * glm::dot(f.shading, s.direction) * inv_pi<S>};
+                           seen && material.has_brilliance() ? S(0) : pd * glm::dot(f.shading, s.direction) * inv_pi<S>,
+                           f.shading};
             else if (arrival.kind != Arrival::unseen)
                 arrival.kind = Arrival::specular;
             const Vec3<S> side = s.event == ScatterEvent::transmission ? -f.normal : f.normal;
@@ -106,6 +113,7 @@ private:
         } kind = unseen;
         Vec3<S> from{};    ///< the diffuse vertex (diffuse only)
         S bsdf_pdf = S(0);  ///< density of the ray's direction: pd cos(theta) / pi (diffuse only)
+        Vec3<S> normal{};  ///< the diffuse vertex's shading normal (diffuse only)
     };
 
     /// One light sample per light at a diffuse vertex x (shadow rays from `shadow_origin`),
@@ -138,7 +146,46 @@ private:
             if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, sample->direction);
             total += f * sample->radiance / sample->pdf;
         }
+        if (scene_.has_environment_light() && material.has_diffuse())
+            // Under brilliance the continuation gets no share (its density is set to 0): weight 1.
+            total += sample_sky(*scene_.environment(), shadow_origin, n, geometric_n, brdf, brilliance ? S(0) : pd, ctx);
         return total;
+    }
+
+    /// One shadow ray to the sky, drawn as environment_lighting draws them, weighted against
+    /// the diffuse continuation (density pd cos / pi). Lambertian, as environment_lighting.
+    [[nodiscard]] Rgb<S> sample_sky(const Environment<S>& sky, const Vec3<S>& shadow_origin, const Vec3<S>& n,
+                                    const Vec3<S>& geometric_n, const Rgb<S>& brdf, S pd, ShadingContext& ctx) const {
+        const Vec2<S> u = ctx.rng.uniform2<S>();
+        const bool by_cosine = sky.is_constant() || ctx.rng.uniform<S>() < S(0.5);
+        const Vec3<S> d = by_cosine ? Frame<S>::from_normal(n).to_world(cosine_hemisphere(u)) : sky.sample(u).direction;
+        const S cos_theta = glm::dot(n, d);
+        if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, d) > S(0))) return Rgb<S>(S(0));
+        const S pdf = environment_direct_pdf(sky, n, d);
+        if (!(pdf > S(0))) return Rgb<S>(S(0));
+        ++ctx.rays.shadow;
+        if (scene_.occluded(Ray<S>{shadow_origin, d})) return Rgb<S>(S(0));
+        const S weight = mis_ ? power_heuristic(pdf, pd * cos_theta * inv_pi<S>) : S(1);
+        return brdf * sky.radiance(d) * (cos_theta * weight / pdf);
+    }
+
+    /// The sky seen by `ray` when it leaves the scene (no `surface`), weighted for `arrival`:
+    /// in full by camera and mirror rays and by caustic paths (one strategy), by the power
+    /// heuristic after a diffuse vertex. A diffuse continuation that meets an object that casts
+    /// no shadow sees the sky through it, as the shadow rays do.
+    [[nodiscard]] Rgb<S> sky_met(const Ray<S>& ray, const std::optional<SurfaceHit<S>>& surface, const Arrival& arrival,
+                                 ShadingContext& ctx) const {
+        if (!scene_.has_environment_light()) return Rgb<S>(S(0));
+        if (arrival.kind != Arrival::diffuse) return surface ? Rgb<S>(S(0)) : sky_seen(scene_, ray.direction);
+        if (!mis_) return Rgb<S>(S(0));  // shadow rays alone cover it
+        if (surface) {
+            if (scene_.objects()[surface->object].options.casts_shadow) return Rgb<S>(S(0));
+            ++ctx.rays.shadow;
+            if (scene_.occluded(Ray<S>{ray.origin, ray.direction})) return Rgb<S>(S(0));
+        }
+        const Environment<S>& sky = *scene_.environment();
+        const Vec3<S> d = glm::normalize(ray.direction);
+        return sky.radiance(d) * power_heuristic(arrival.bsdf_pdf, environment_direct_pdf(sky, arrival.normal, d));
     }
 
     /// Emission of the sphere lights `ray` meets before its surface hit (lights are not objects:

@@ -6,6 +6,8 @@
 // (Figure 2). Mirror and glass recurse up to the maximum ray depth. A material's ambient
 // radiance is added where camera, mirror and glass rays meet it; gather rays do not see it.
 // What arrives along a ray that ran inside absorbing glass is scaled by its transmittance.
+// Camera, mirror and glass rays that leave the scene see the sky; gather rays do not (its
+// direct light is the shadow rays', what it brings after a bounce the photons').
 
 #include <limits>
 #include <optional>
@@ -36,7 +38,7 @@ public:
     /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray.
     [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
         const auto surface = scene_.intersect(ray);
-        if (!surface) return Rgb<S>(S(0));
+        if (!surface) return sky_seen(scene_, ray.direction);
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;

@@ -85,16 +85,19 @@ constexpr std::uint64_t sppm_photon_salt = 0x7370706d70686fULL, sppm_camera_salt
 }
 
 /// Photon index -> light and the power each of its photons carries (a pass emits, in total, the
-/// lights' power).
+/// lights' power). A sky of power `environment_power` > 0 (into the scene's environment ball)
+/// is light lights.size(); its `power` is 1 / its count, times each photon's own
+/// (Environment::sample_photon).
 template <Scalar S> struct SppmEmission {
     std::vector<std::size_t> first;
     std::vector<Rgb<S>> power;
-    SppmEmission(std::span<const Light<S>> lights, std::size_t photons) {
-        const std::vector<std::size_t> counts = photons_per_light<S>(lights, photons);
+    SppmEmission(std::span<const Light<S>> lights, std::size_t photons, double environment_power = 0) {
+        const std::vector<std::size_t> counts = photons_per_light<S>(lights, photons, {}, {}, environment_power);
         std::size_t at = 0;
         for (std::size_t l = 0; l < counts.size(); ++l) {
             first.push_back(at);
-            power.push_back(counts[l] ? light_power(lights[l]) / S(counts[l]) : Rgb<S>(S(0)));
+            const Rgb<S> total = l < lights.size() ? light_power(lights[l]) : Rgb<S>(S(1));
+            power.push_back(counts[l] ? total / S(counts[l]) : Rgb<S>(S(0)));
             at += counts[l];
         }
     }
@@ -129,14 +132,25 @@ template <class SceneT>
                 Pcg32 rng(seed, i);
                 const std::size_t l = plan.light_of(i);
                 if (is_black(plan.power[l])) continue;
-                const Vec3<S> dir = sample_emission_direction(lights[l], settings.emission, rng);
-                Ray<S> ray{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
-                Rgb<S> power = plan.power[l] * emission_weight(lights[l], dir);
+                const bool sky = l == lights.size();
+                Ray<S> ray{};
+                Rgb<S> power;
+                if (sky) {
+                    const Vec2<S> u_direction = rng.uniform2<S>();
+                    const EnvironmentPhoton<S> p = scene.environment()->sample_photon(scene.environment_ball(), u_direction,
+                                                                                      rng.uniform2<S>());
+                    ray = p.ray;
+                    power = plan.power[l] * p.power;
+                } else {
+                    const Vec3<S> dir = sample_emission_direction(lights[l], settings.emission, rng);
+                    ray = Ray<S>{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
+                    power = plan.power[l] * emission_weight(lights[l], dir);
+                }
                 for (unsigned depth = 0; depth < settings.max_photon_depth; ++depth) {
                     const auto surface = scene.intersect(ray);
                     ++block.rays;
                     if (!surface) break;
-                    if (depth == 0) power *= first_hit_scale(lights[l], surface->hit.point);  // the light's falloff
+                    if (depth == 0 && !sky) power *= first_hit_scale(lights[l], surface->hit.point);  // the light's falloff
                     const Material<S>& material = *surface->material;
                     const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
                     power *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
@@ -256,7 +270,9 @@ template <class SceneT>
     const unsigned width = settings.width, height = settings.height;
     std::array<std::vector<SppmPixel>, 2> halves;  // even and odd passes' progressive states
     for (auto& h : halves) h.resize(std::size_t(width) * height);
-    const detail::SppmEmission<S> plan(scene.lights(), settings.sppm_photons_per_pass);
+    const bool sky = scene.has_environment_light() && scene.environment_ball().radius > S(0);
+    const detail::SppmEmission<S> plan(scene.lights(), settings.sppm_photons_per_pass,
+                                       sky ? double(scene.environment()->power_into(scene.environment_ball())) : 0.0);
     const double footprint = double(pixel_angle(camera, width, height)) * sppm_radius_in_pixels;
     auto seconds_since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
     stats.stopped_by = "passes done";

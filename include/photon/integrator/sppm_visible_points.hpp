@@ -56,7 +56,8 @@ template <Scalar S> struct CameraPath {
 /// Follows the camera ray `ray` through mirrors and glass (up to settings.max_ray_depth, primary
 /// ray = 1) to its visible point, adding the direct light (and the ambient radiance) of every
 /// vertex on the way.
-/// Lights stay invisible to the path, as to camera and mirror rays in every mode.
+/// Lights stay invisible to the path, as to camera and mirror rays in every mode; the sky is
+/// seen where the path leaves the scene.
 template <class SceneT>
 [[nodiscard]] CameraPath<typename SceneT::scalar_type> trace_camera_path(const SceneT& scene,
                                                                          Ray<typename SceneT::scalar_type> ray,
@@ -68,7 +69,10 @@ template <class SceneT>
     S length = 0;
     for (unsigned depth = 1;; ++depth) {
         const auto surface = scene.intersect(ray);
-        if (!surface) return path;
+        if (!surface) {  // left the scene: the sky, as radiance() sees it
+            path.direct += throughput * sky_seen(scene, ray.direction);
+            return path;
+        }
         length += surface->hit.t;
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
@@ -78,8 +82,10 @@ template <class SceneT>
         path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing
         if (material.has_diffuse() || material.has_highlight()) {  // as radiance(): a highlight needs no diffuse
             const Vec3<S> above = offset_origin(x, f.normal, error);
+            // The sky by as many shadow rays per pass as an area light: passes average them.
             path.direct += throughput * direct_lighting(scene, x, above, f.shading, f.normal, -ray.direction, material,
-                                                        material.diffuse_at(x), settings.shadow_samples, ctx);
+                                                        material.diffuse_at(x), settings.shadow_samples, ctx, {},
+                                                        settings.shadow_samples);
         }
         const bool continues = depth < settings.max_ray_depth && material.is_specular();
         const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);

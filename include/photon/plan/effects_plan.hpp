@@ -78,6 +78,7 @@ struct EffectsPlan {
     bool global_for_unaimed_caustics_only = false;
     PathKinds global_store{};  ///< what the global map holds, if built
     std::size_t global_photons = 0, caustic_photons = 0;  ///< emitted by the passes that run
+    std::size_t environment_photons = 0;  ///< of the global photons, the sky's (shared with the lights by power)
 
     /// What the settings asked for and the plan does not do, one line each naming the object or
     /// light and the reason ("caustic photons: no mirror or glass surface").
@@ -225,6 +226,10 @@ template <class SceneT>
     }
     bool lit = false;
     for (const auto& lp : plan.lights) lit = lit || lp.emits;
+    // The sky lights whatever it can reach from outside, and is never walled off from all of
+    // it: it counts as a light that emits (its photons go with the global pass).
+    const bool sky = scene.has_environment_light();
+    lit = lit || sky;
 
     // Surfaces.
     std::vector<std::uint32_t> diffuse, specular;
@@ -310,12 +315,14 @@ template <class SceneT>
     // Caustic pass, as render() runs it: aimed at the caustic targets, from the lights that emit.
     const std::vector<bool> emits = plan.light_emits();
     const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
-    const bool any_emits = [&] {
+    const bool lights_emit = [&] {
         for (std::size_t l = 0; l < lights.size(); ++l)
             if (emits[l] && max_component(light_power(lights[l])) > S(0)) return true;
         return false;
     }();
-    plan.caustic_pass = want_caustics && settings.caustic_photons > 0 && !aim.empty() && any_emits && !diffuse.empty();
+    const bool any_emits = lights_emit || sky;
+    // Only lights aim caustic photons: the sky's caustics come with the global pass.
+    plan.caustic_pass = want_caustics && settings.caustic_photons > 0 && !aim.empty() && lights_emit && !diffuse.empty();
     if (settings.caustic_photons > 0 && !plan.caustic_pass) {
         const std::string why = !plan.caustics.present ? plan.caustics.reason
                                 : aim.empty() && !unseen_caustics.empty()
@@ -331,7 +338,7 @@ template <class SceneT>
     const bool collect = want_caustics && plan.caustics.present;
     bool unaimed = collect && !plan.caustic_pass;
     for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
-    unaimed = unaimed || (collect && !unseen_caustics.empty());
+    unaimed = unaimed || (collect && !unseen_caustics.empty()) || (collect && sky);
     if (settings.caustic_photons > 0) {
         for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
         for (std::uint32_t i : unseen_caustics)
@@ -391,10 +398,15 @@ template <class SceneT>
     plan.global_photons = plan.global_pass ? settings.global_photons : 0;
     plan.caustic_photons = plan.caustic_pass ? settings.caustic_photons : 0;
     plan.photons_not_shot = (settings.global_photons - plan.global_photons) + (settings.caustic_photons - plan.caustic_photons);
-    const auto global_share = photons_per_light<S>(lights, plan.global_photons, emits);
+    // The sky's share of the global photons, by its power into the ball its photons enter through
+    // (trace_global_photons shares them so).
+    const Ball<S> sky_ball = scene.environment_ball();
+    const double sky_power = sky && sky_ball.radius > S(0) ? double(scene.environment()->power_into(sky_ball)) : 0.0;
+    const auto global_share = photons_per_light<S>(lights, plan.global_photons, emits, {}, sky_power);
+    plan.environment_photons = sky_power > 0 ? global_share.back() : 0;
     // A light whose cone reaches no caustic target shoots no caustic photon (caustic_aim).
     const auto caustic_share = photons_per_light<S>(lights, plan.caustic_photons, aim.aiming_lights(lights.size(), emits));
-    const auto unplanned_share = photons_per_light<S>(lights, plan.global_photons);
+    const auto unplanned_share = photons_per_light<S>(lights, plan.global_photons, {}, {}, sky_power);
     for (std::size_t l = 0; l < lights.size(); ++l) {
         plan.lights[l].global_photons = global_share[l];
         plan.lights[l].caustic_photons = caustic_share[l];
@@ -436,8 +448,12 @@ template <class SceneT>
     plan.pilot.seed = settings.seed;
     const std::vector<double> fraction = visible_power_fractions(scene, camera, emits, settings.emission, plan.pilot);
     plan.global_light_shares = visible_power_shares<S>(lights, fraction, emits, plan.pilot.floor);
-    const auto shared = photons_per_light<S>(lights, plan.global_photons, emits, plan.global_light_shares);
-    const auto unplanned = photons_per_light<S>(lights, plan.global_photons);
+    const Ball<S> sky_ball = scene.environment_ball();
+    const double sky_power = scene.has_environment_light() && sky_ball.radius > S(0)
+                                 ? double(scene.environment()->power_into(sky_ball)) : 0.0;
+    const auto shared = photons_per_light<S>(lights, plan.global_photons, emits, plan.global_light_shares, sky_power);
+    const auto unplanned = photons_per_light<S>(lights, plan.global_photons, {}, {}, sky_power);
+    plan.environment_photons = sky_power > 0 ? shared.back() : 0;
     plan.photons_moved = 0;
     for (std::size_t l = 0; l < lights.size(); ++l) {
         if (emits[l]) plan.lights[l].visible_fraction = fraction[l];

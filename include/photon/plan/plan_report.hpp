@@ -42,6 +42,7 @@ namespace photon {
     std::string maps;
     if (plan.global_pass)
         maps += "global " + std::to_string(plan.global_photons) + " photons" +
+                (plan.environment_photons ? " (" + std::to_string(plan.environment_photons) + " from the sky)" : "") +
                 (plan.global_for_unaimed_caustics_only ? " (for unaimed caustics only)" : "");
     if (plan.caustic_pass) maps += (maps.empty() ? "" : ", ") + ("caustic " + std::to_string(plan.caustic_photons) + " photons");
     line("maps", maps.empty() ? "none" : maps);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// A scene: shapes with materials, and lights. Shapes are a closed set given as template
+// A scene: shapes with materials, lights, and optionally a sky (an Environment). Shapes are a closed set given as template
 // parameters (a user's own Primitive joins by being listed), stored in a std::variant and
 // dispatched with std::visit; a BVH over the bounded ones answers ray queries.
 
@@ -29,6 +29,7 @@
 #include "../geometry/transformed.hpp"
 #include "../geometry/triangle.hpp"
 #include "../geometry/triangle_mesh.hpp"
+#include "../light/environment.hpp"
 #include "../light/light.hpp"
 #include "../material/material.hpp"
 
@@ -105,6 +106,17 @@ public:
         lights_.push_back(light);
     }
 
+    /// Sets the sky that rays leaving the scene see and that lights it (environment.hpp).
+    void set_environment(Environment<S> environment) { environment_ = std::move(environment); }
+    void clear_environment() noexcept { environment_.reset(); }
+    [[nodiscard]] const std::optional<Environment<S>>& environment() const noexcept { return environment_; }
+    /// Whether a sky with some light in it is set.
+    [[nodiscard]] bool has_environment_light() const noexcept { return environment_ && !environment_->is_black(); }
+    /// The ball the sky's photons enter through: around the bounded objects (infinite planes
+    /// excluded, so they get sky photons only inside it); radius 0 when there are none.
+    /// Valid after commit().
+    [[nodiscard]] const Ball<S>& environment_ball() const noexcept { return environment_ball_; }
+
     /// Builds the acceleration structure. Call after the last add() and before any query
     /// (the commit step of Embree's API); queries are then const and thread-safe.
     void commit(BvhConfig config = {.max_leaf_size = 2});
@@ -174,6 +186,8 @@ private:
     std::vector<Object> objects_;
     std::vector<Material<S>> materials_;
     std::vector<Light<S>> lights_;
+    std::optional<Environment<S>> environment_;
+    Ball<S> environment_ball_{};
     Bvh<S> bvh_;
     std::vector<std::uint32_t> bvh_objects_;  ///< object id per BVH primitive (leaf order)
     std::vector<std::uint32_t> unbounded_;    ///< objects tested outside the BVH (planes)
@@ -218,6 +232,7 @@ template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhCon
     bvh_ = Bvh<S>(boxes, centers, config);
     bvh_objects_.clear();
     for (std::uint32_t p : bvh_.primitive_indices()) bvh_objects_.push_back(ids[p]);
+    environment_ball_ = boxes.empty() ? Ball<S>{} : ball_around(bvh_.bounds());
     committed_ = true;
 }
 

@@ -77,7 +77,9 @@ struct PhotonBlock {
     std::uint64_t rays = 0;
 };
 
-/// Photon index -> (light, power per photon) from the per-light counts.
+/// Photon index -> (light, power per photon) from the per-light counts. With a sky of power
+/// `environment_power` > 0 its photons come last (light index lights.size()), and its scale is
+/// 1 / their count: each sky photon's own power comes from Environment::sample_photon.
 template <Scalar S> struct EmissionPlan {
     std::vector<std::size_t> first;  // first photon index of each light
     std::vector<Rgb<S>> scale;       // power carried by each photon of a light, before any weighting
@@ -85,12 +87,13 @@ template <Scalar S> struct EmissionPlan {
 
     template <class Lights>
     EmissionPlan(const Lights& lights, std::size_t count, const std::vector<bool>& emits = {},
-                 const std::vector<double>& shares = {}) {
-        const auto counts = photons_per_light<S>(lights, count, emits, shares);
+                 const std::vector<double>& shares = {}, double environment_power = 0) {
+        const auto counts = photons_per_light<S>(lights, count, emits, shares, environment_power);
         std::size_t at = 0;
         for (std::size_t l = 0; l < counts.size(); ++l) {
             first.push_back(at);
-            scale.push_back(counts[l] ? light_power(lights[l]) / S(counts[l]) : Rgb<S>(S(0)));
+            const Rgb<S> power = l < lights.size() ? light_power(lights[l]) : Rgb<S>(S(1));
+            scale.push_back(counts[l] ? power / S(counts[l]) : Rgb<S>(S(0)));
             at += counts[l];
         }
         emitting = at;
@@ -156,13 +159,13 @@ TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t sa
     return result;
 }
 
-/// Follows one photon of `light` from `ray` with `power`, rescaled at its first hit by the light's
-/// falloff (first_hit_scale; 1 for a physical light). `caustic_only` stops at the first diffuse event
+/// Follows one photon of `light` (null: of the sky) from `ray` with `power`, rescaled at its
+/// first hit by the light's falloff (first_hit_scale; 1 for a physical light and the sky). `caustic_only` stops at the first diffuse event
 /// and stores only after a specular bounce (L S+ D); otherwise paths are stored per `store`, and
 /// when `unaimed` (the caustic pass cannot emit along this photon's first ray) its L S+ D hits
 /// also go to block.unaimed_caustics.
 template <class SceneT, Scalar S>
-void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, Rgb<S> power,
+void trace_photon_path(const SceneT& scene, const Light<S>* light, Ray<S> ray, Rgb<S> power,
                        const PhotonTracingSettings& settings, bool caustic_only, bool unaimed, Pcg32& rng,
                        PhotonBlock& block) {
     bool specular_only = true;
@@ -170,7 +173,7 @@ void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, R
         const auto surface = scene.intersect(ray);
         ++block.rays;
         if (!surface) return;
-        if (depth == 0) power *= first_hit_scale(light, surface->hit.point);
+        if (depth == 0 && light) power *= first_hit_scale(*light, surface->hit.point);
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         // The transmittance is carried exactly (no roulette on it): absorbing glass is usually
@@ -210,8 +213,8 @@ void trace_photon_path(const SceneT& scene, const Light<S>& light, Ray<S> ray, R
 
 }  // namespace detail
 
-/// Global pass: `settings.photons` photons shared among the lights by power, emitted uniformly
-/// over each light's directions, stored at diffuse hits whose path kind is in `settings.store`.
+/// Global pass: `settings.photons` photons shared among the lights (and the sky) by power,
+/// emitted uniformly over each light's directions (the sky's by Environment::sample_photon), stored at diffuse hits whose path kind is in `settings.store`.
 /// With `settings.collect_unaimed_caustics`, the L S+ D photons emitted outside `aim` (the caustic
 /// pass's cones; empty: there is no caustic pass) are returned in `unaimed_caustics` as well.
 template <class SceneT>
@@ -219,18 +222,29 @@ template <class SceneT>
                                                  const CausticAim<typename SceneT::scalar_type>& aim = {}) {
     using S = typename SceneT::scalar_type;
     const auto lights = scene.lights();
+    // The sky emits through the ball around the objects (none: no photon can hit one).
+    const Ball<S> ball = scene.environment_ball();
+    const bool sky = scene.has_environment_light() && ball.radius > S(0);
+    const double sky_power = sky ? double(scene.environment()->power_into(ball)) : 0.0;
     // No light, or none with power: nothing to emit. (Emitting anyway traced photons of zero
     // power, and without lights read lights[0] out of range.)
-    if (!detail::has_emitting_light(lights)) return {};
-    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits, settings.light_shares);
+    if (!detail::has_emitting_light(lights) && !(sky_power > 0)) return {};
+    const detail::EmissionPlan<S> plan(lights, settings.photons, settings.light_emits, settings.light_shares, sky_power);
     if (plan.emitting == 0) return {};
     return detail::run_blocks(settings, 0x676c6f62616cULL, [&](std::size_t i, Pcg32& rng, detail::PhotonBlock& block) {
         const std::size_t l = plan.light_of(i);
+        if (l == lights.size()) {  // the sky's: never aimed by the caustic pass, so its caustics are unaimed
+            const Vec2<S> u_direction = rng.uniform2<S>();
+            const EnvironmentPhoton<S> p = scene.environment()->sample_photon(ball, u_direction, rng.uniform2<S>());
+            detail::trace_photon_path(scene, static_cast<const Light<S>*>(nullptr), p.ray, plan.scale[l] * p.power,
+                                      settings, false, settings.collect_unaimed_caustics, rng, block);
+            return;
+        }
         const Light<S>& light = lights[l];
         const Vec3<S> dir = sample_emission_direction(light, settings.sampler, rng);
         const Vec3<S> origin = sample_emission_origin(light, dir, rng.uniform2<S>());
         const bool unaimed = settings.collect_unaimed_caustics && !aim.covers(l, dir);
-        detail::trace_photon_path(scene, light, Ray<S>{origin, dir}, plan.scale[l] * emission_weight(light, dir), settings,
+        detail::trace_photon_path(scene, &light, Ray<S>{origin, dir}, plan.scale[l] * emission_weight(light, dir), settings,
                                   false, unaimed, rng, block);
     });
 }
@@ -270,7 +284,7 @@ template <class SceneT>
         const Rgb<S> power = plan.scale[l] * (profile / (emission_solid_angle(light) * sample.pdf));
         const Vec3<S> origin = sample_emission_origin(light, sample.direction, rng.uniform2<S>());
         const std::size_t before = block.photons.size();
-        detail::trace_photon_path(scene, light, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
+        detail::trace_photon_path(scene, &light, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
         if (sample.broad) {  // a mirror plane's: kept apart, read like the global map
             block.unaimed_caustics.insert(block.unaimed_caustics.end(), block.photons.begin() + std::ptrdiff_t(before),
                                           block.photons.end());

@@ -19,6 +19,7 @@
 #include "build/material.hpp"
 #include "build/scene_builder.hpp"
 #include "build/settings.hpp"
+#include "build/sky.hpp"
 #include "build/warnings.hpp"
 #include "description.hpp"
 #include "diagnostics.hpp"
@@ -64,6 +65,7 @@ template <Scalar S>
         throw Error(cam.at.known() ? cam.at : desc.at, e.what());
     }
     DefaultScene<S> scene;
+    if (auto sky = build_environment<S>(desc, warn)) scene.set_environment(std::move(*sky));
     builder.add_all(scene);
     scene.commit();
     // Said here, where the object's place in the file is known, for `check` and `render` alike

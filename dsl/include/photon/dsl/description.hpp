@@ -443,10 +443,21 @@ struct GlobalSettings {
     SourceLocation at;
 };
 
+/// `sky_sphere { pigment {...} ... [emission COLOR] TRANSFORMATIONS }`: the sky seen and lit by,
+/// each pigment evaluated at the unit direction moved back by `transform` (as POV-Ray does).
+struct SkySphere {
+    std::vector<Pigment> pigments;  ///< bottom first, as written (the last is on top)
+    Vector3 emission{1.0};          ///< POV-Ray 3.7's multiplier of every pigment's colour
+    Transform transform;            ///< the sky_sphere's own transformations, after each pigment's
+    SourceLocation at;
+};
+
 /// A whole scene file, evaluated.
 struct SceneDescription {
     std::optional<double> version;  ///< from `#version`
     std::optional<CameraDescription> camera;
+    std::optional<Color> background;      ///< `background { COLOR }`, the last one written
+    std::optional<SkySphere> sky_sphere;  ///< the last one written
     std::vector<Object> objects;  ///< top-level statements, lights included, in file order
     GlobalSettings settings;
     std::vector<std::shared_ptr<const SourceFile>> files;  ///< the scene file and every include, in reading order

@@ -39,6 +39,7 @@ public:
              << "#version 3.7;\n\n";
         settings(d.settings, d.version);
         if (d.camera) camera(*d.camera);
+        sky(d);
         for (const Object& o : d.objects) object(o, 0);
         return out_.str();
     }
@@ -156,6 +157,24 @@ private:
     [[nodiscard]] static std::string rgbft(const Color& c) {
         return "rgbft <" + num(c.rgb.x) + ", " + num(c.rgb.y) + ", " + num(c.rgb.z) + ", " + num(c.filter) + ", " +
                num(c.transmit) + ">";
+    }
+
+    /// The background colour and the sky_sphere: its pigments with their transformations,
+    /// then its emission and its own transformation.
+    void sky(const SceneDescription& d) {
+        if (d.background) out_ << "background { " << rgbft(*d.background) << " }\n\n";
+        if (!d.sky_sphere) return;
+        out_ << "sky_sphere {\n";
+        for (const Pigment& p : d.sky_sphere->pigments) {
+            indent(1);
+            if (p.pattern)
+                pigment_pattern(*p.pattern, p.transform);
+            else
+                out_ << "pigment { " << rgbft(p.color) << " }\n";
+        }
+        if (d.sky_sphere->emission != Vector3(1.0)) indent(1), out_ << "emission rgb " << vec(d.sky_sphere->emission) << '\n';
+        if (!d.sky_sphere->transform.is_identity()) indent(1), placement_matrix(d.sky_sphere->transform), out_ << '\n';
+        out_ << "}\n\n";
     }
 
     /// An evaluated pattern with every modifier that differs from POV-Ray's default, its colours

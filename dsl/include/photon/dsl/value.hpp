@@ -87,7 +87,7 @@ struct BlendMap {
     bool reduced = false;  ///< an entry was a patterned pigment or texture, kept as its average colour
 };
 
-/// A declared block photon reads but does not render (`fog`, `media`, `normal`, `sky_sphere`, ...).
+/// A declared block photon reads but does not render (`fog`, `media`, `rainbow`, ...).
 struct IgnoredBlock {
     std::string keyword;
 };
@@ -115,7 +115,7 @@ struct Array {
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
                                CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
-                               BlendMap, IgnoredBlock, Normal>;
+                               BlendMap, IgnoredBlock, Normal, SkySphere>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -166,8 +166,10 @@ struct Value {
             return "a " + std::get<BlendMap>(v).keyword;
         case 14:
             return "a " + std::get<IgnoredBlock>(v).keyword;
-        default:
+        case 15:
             return "a normal";
+        default:
+            return "a sky_sphere";
     }
 }
 

@@ -75,7 +75,7 @@ public:
                   "nothing renders: photon skipped every object of the scene (" + std::to_string(skipped_) +
                       (skipped_ == 1 ? " object" : " objects") + " it has no shape for)",
                   "nothing renders", "");
-        if (scene.lights().empty()) {
+        if (scene.lights().empty() && !scene.has_environment_light()) {
             bool glows = false;  // POV-Ray's ambient and emission show without lights
             for (const auto& m : scene.materials()) glows = glows || m.params().ambient != Rgb<S>(S(0));
             warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"

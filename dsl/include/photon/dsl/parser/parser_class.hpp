@@ -328,6 +328,9 @@ private:
     void parse_bound_or_clip(const Token& kw, const Object& obj);
     bool bound_contains(const Object& obj, const std::vector<Object>& bounds) const;
     void skip_effect(const Token& kw);
+    // sky.hpp
+    void parse_sky_sphere(const Token& kw);
+    SkySphere parse_sky_sphere_block(const Token& kw);
 
     // patterns.hpp
     struct PatternState;

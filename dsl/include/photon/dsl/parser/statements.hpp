@@ -46,17 +46,19 @@ inline void Parser::parse_statements() {
                 parse_global_settings(next());
                 continue;
             }
+            // BACKGROUND: background { COLOR }: the sky's colour where no sky_sphere covers it
             if (w == "background") {
                 const Token kw = next();
                 open_block(kw);
-                const Color c = parse_color("the background colour");
+                scene_.background = parse_color("the background colour");
                 close_block(kw, "nothing more");
-                if (c.rgb != Vector3(0.0))
-                    degrade(kw.location, degraded::ignored_effect, "background",
-                            "the background colour is ignored: photon's background is black");
                 continue;
             }
-            if (one_of(w, {"sky_sphere", "fog", "rainbow", "media"})) {
+            if (w == "sky_sphere") {
+                parse_sky_sphere(next());
+                continue;
+            }
+            if (one_of(w, {"fog", "rainbow", "media"})) {
                 skip_effect(next());
                 continue;
             }

@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// `background` and `sky_sphere` build the library's sky (light/environment.hpp) with POV-Ray
+// 3.7's composition (Trace::ComputeSky): the pigments from the last written down, each times
+// `emission`, the background under them, evaluated at the direction moved back by the
+// sky_sphere's transformations (all of its pigments, wherever written); and export-pov writes
+// them back.
+
+#include <catch2/catch.hpp>
+
+#include "dsl_test_util.hpp"
+
+using namespace dsl_test;
+using Catch::Matchers::Contains;
+using photon::Rgb;
+using photon::Vec3;
+
+namespace {
+
+const char* const sky_stage = "camera { location <0, 0, -5> look_at 0 }\nsphere { 0, 1 }\n";
+
+StagedScene build_sky(const std::string& text) { return build_staged(text, {}, sky_stage); }
+
+void check_sky(const StagedScene& b, Vec3<double> direction, Rgb<double> expected) {
+    REQUIRE(b.scene.environment().has_value());
+    const Rgb<double> got = b.scene.environment()->radiance(glm::normalize(direction));
+    INFO("direction " << direction.x << ", " << direction.y << ", " << direction.z);
+    for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(expected[c]).margin(1e-9));
+}
+
+}  // namespace
+
+TEST_CASE("background is the sky's colour, with no warning", "[dsl][sky]") {
+    const StagedScene b = build_sky("background { rgb <0.2, 0.4, 0.6> }\n");
+    check_sky(b, {0, 1, 0}, {0.2, 0.4, 0.6});
+    check_sky(b, {1, -1, 0.3}, {0.2, 0.4, 0.6});
+    CHECK(b.scene.environment()->is_constant());
+    CHECK(all_messages(b.warnings).find("background") == std::string::npos);
+    // The sky lights the scene: no "no light_source" warning.
+    CHECK(all_messages(b.warnings).find("no light_source") == std::string::npos);
+    // POV-Ray's default, black, is no sky at all.
+    CHECK_FALSE(build_sky("background { rgb 0 }\n").scene.environment().has_value());
+}
+
+TEST_CASE("sky_sphere's pigment is evaluated at the direction, moved back by its transformations", "[dsl][sky]") {
+    // The common idiom: c0 at the nadir, c1 at the zenith.
+    const StagedScene a = build_sky(
+        "sky_sphere { pigment { gradient y color_map { [0 rgb <1, 0.5, 0>] [1 rgb <0, 0.5, 1>] } scale 2 translate -1 } }\n");
+    check_sky(a, {0, 1, 0}, {0, 0.5, 1});
+    check_sky(a, {0, -1, 0}, {1, 0.5, 0});
+    check_sky(a, {1, 0, 0}, {0.5, 0.5, 0.5});
+    CHECK(all_messages(a.warnings).find("sky_sphere") == std::string::npos);
+    // The sky_sphere's own rotation turns the gradient: after rotate 90 about z, +y goes to -x.
+    const StagedScene r = build_sky(
+        "sky_sphere { pigment { gradient y color_map { [0 rgb <1, 0.5, 0>] [1 rgb <0, 0.5, 1>] } scale 2 translate -1 }"
+        " rotate <0, 0, 90> }\n");
+    check_sky(r, {-1, 0, 0}, {0, 0.5, 1});
+    check_sky(r, {0, 1, 0}, {0.5, 0.5, 0.5});
+    // emission multiplies the pigments, not the background.
+    const StagedScene e = build_sky("background { rgb 0.1 }\nsky_sphere { pigment { rgb <0.2, 0.4, 0.6> } emission rgb 2 }\n");
+    check_sky(e, {0, 0, 1}, {0.4, 0.8, 1.2});
+}
+
+TEST_CASE("sky_sphere's layers compose as POV-Ray 3.7's, over the background", "[dsl][sky]") {
+    // Top, rgbt <1, 1, 1, 0.5>: its own 0.5, and passes 0.5 (transmit). Below, rgbf <0, 1, 1, 0.5>:
+    // 0.5 * <0, 1, 1> * 0.5, and passes 0.5 * <0, 1, 1> of what reaches it (filter). The
+    // background <1, 1, 1> under both: 0.5 * 0.5 * <0, 1, 1>.
+    const StagedScene b = build_sky("background { rgb 1 }\n"
+                                    "sky_sphere { pigment { rgbf <0, 1, 1, 0.5> } pigment { rgbt <1, 1, 1, 0.5> } }\n");
+    check_sky(b, {0, 1, 0}, {0.5, 0.5 + 0.25 + 0.25, 0.5 + 0.25 + 0.25});
+    // Without a background the transparent parts show black, as in POV-Ray.
+    const StagedScene black = build_sky("sky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
+    check_sky(black, {0, 1, 0}, {0.5, 0.5, 0.5});
+}
+
+TEST_CASE("a declared sky_sphere is used by name and added to, and a bad emission is an error", "[dsl][sky]") {
+    const StagedScene b = build_sky("#declare Sky = sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }\n"
+                                    "sky_sphere { Sky emission rgb 2 rotate <0, 0, 90> }\n");
+    CHECK(places(b.warnings, "ignored effect").empty());
+    check_sky(b, {0, 1, 0}, {0, 0, 0});  // rotated: the gradient now runs along -x
+    check_sky(b, {-0.6, 0.8, 0}, {1.2, 1.2, 1.2});
+    CHECK_THROWS_WITH(build_sky("sky_sphere { pigment { rgb 1 } emission rgb -1 }\n"), Contains("sky_sphere"));
+}
+
+TEST_CASE("export-pov writes background and sky_sphere back", "[dsl][sky]") {
+    const StagedScene a = build_sky("background { rgb <0.1, 0.2, 0.3> }\n"
+                                    "sky_sphere { pigment { gradient y color_map { [0 rgb 1] [1 rgbt <0, 0, 1, 0.5>] } } "
+                                    "emission rgb 1.5 rotate <0, 0, 30> }\n");
+    const auto b = dsl::build<double>(dsl::parse_string(dsl::export_pov(a.desc), "exported.pov"));
+    for (const Vec3<double> d : {Vec3<double>(0, 1, 0), Vec3<double>(0.3, 0.5, -0.2), Vec3<double>(-1, 0.1, 0)}) {
+        const Rgb<double> want = a.scene.environment()->radiance(glm::normalize(d));
+        const Rgb<double> got = b.scene.environment()->radiance(glm::normalize(d));
+        for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-9));
+    }
+}
