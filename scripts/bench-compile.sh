@@ -5,9 +5,11 @@
 # compile_commands.json of a Release build in $PHOTON_COMPILE_BUILD_DIR, default build-compile/):
 #   - the umbrella header alone (#include <photon/photon.hpp>, nothing used),
 #   - examples/cornell.cpp (one render() call on a hand-built scene),
-#   - the CLI (dsl/cli/main.cpp), the CLI's compiled unit of the scene language and render
-#     instantiations (dsl/src/*.cpp) when the build has one,
-#   - one scene-language test file (tests/dsl/scenes_test.cpp).
+#   - the CLI: each of its units (dsl/cli/*.cpp, which compile in parallel) and their sum,
+#   - the compiled units of the render instantiations and the scene language (src/*.cpp,
+#     dsl/src/*.cpp),
+#   - one scene-language test file (tests/dsl/scenes_test.cpp), with its test executable's flags
+#     (the tests compile as unity files, so a test file has no entry of its own).
 # Each unit is compiled --repeat times (default 1) and the fastest run kept. With --full it also
 # builds every target from scratch with -j$(nproc) and reports the wall and summed job time.
 # Usage: scripts/bench-compile.sh [--repeat N] [--full]
@@ -32,30 +34,48 @@ printf '#include <photon/photon.hpp>\nint main() { return 0; }\n' >"$tmp/umbrell
 
 # command_for SOURCE [AS]: the compile command of SOURCE from compile_commands.json, compiling AS
 # instead when given (the umbrella header borrows the flags of examples/cornell.cpp), to $tmp/out.o.
+# A source compiled inside a unity file takes the flags of the unity file of its own directory.
 command_for() {
-  /usr/bin/env python3 - "$build/compile_commands.json" "$1" "${2:-$1}" "$tmp/out.o" <<'EOF'
-import json, shlex, sys
-db, source, compiled, out = sys.argv[1:]
-for entry in json.load(open(db)):
-    if entry["file"] == source:
-        args = shlex.split(entry["command"])
-        args = [a for a in args if a not in ("-MD",)]
-        i = 0; kept = []
-        while i < len(args):  # drop -o X, -MT X, -MF X and the source
-            if args[i] in ("-o", "-MT", "-MF"): i += 2; continue
-            if args[i] == "-c": i += 2; continue
-            kept.append(args[i]); i += 1
-        print(entry["directory"]); print(shlex.join(kept + ["-c", compiled, "-o", out])); break
-else:
+  /usr/bin/env python3 - "$build/compile_commands.json" "$1" "${2:-$1}" "$tmp/out.o" "$root" "$build" <<'EOF'
+import json, os, shlex, sys
+db, source, compiled, out, root, build = sys.argv[1:]
+entries = json.load(open(db))
+matches = [e for e in entries if e["file"] == source]
+if not matches:  # <build>/tests/dsl/CMakeFiles/test_dsl.dir/Unity/unity_0_cxx.cxx for <root>/tests/dsl/x.cpp
+    folder = os.path.relpath(os.path.dirname(source), root)
+    matches = [e for e in entries if "/Unity/" in e["file"] and
+               os.path.relpath(e["file"], build).split("/CMakeFiles/")[0] == folder]
+if not matches:
     sys.exit("no compile command for " + source)
+args = shlex.split(matches[0]["command"])
+args = [a for a in args if a not in ("-MD",)]
+i = 0; kept = []
+while i < len(args):  # drop -o X, -MT X, -MF X and the source
+    if args[i] in ("-o", "-MT", "-MF"): i += 2; continue
+    if args[i] == "-c": i += 2; continue
+    kept.append(args[i]); i += 1
+print(matches[0]["directory"]); print(shlex.join(kept + ["-c", compiled, "-o", out]))
 EOF
 }
 
-# measure LABEL SOURCE [AS]: one table row, the fastest of $repeat runs.
+# sources_of TARGET_DIR: the sources compiled into the target whose objects go to TARGET_DIR
+# (e.g. photon_cli.dir), in the order of compile_commands.json.
+sources_of() {
+  /usr/bin/env python3 - "$build/compile_commands.json" "$1" <<'EOF'
+import json, sys
+db, target = sys.argv[1:]
+for e in json.load(open(db)):
+    if "/" + target + "/" in e.get("output", e["command"]): print(e["file"])
+EOF
+}
+
+# measure LABEL SOURCE [AS]: one table row, the fastest of $repeat runs; sets cpu_s and peak_mb.
 measure() {
-  local label=$1 source=$2 as=${3:-$2} lines dir cmd best="" mem=""
+  local label=$1 source=$2 as=${3:-$2} lines=() dir cmd best="" mem=""
+  cpu_s=0 peak_mb=0
   [ -f "$source" ] || return 0
   mapfile -t lines < <(command_for "$source" "$as")
+  if [ ${#lines[@]} -ne 2 ]; then echo "bench-compile: no compile command for $source" >&2; exit 1; fi
   dir=${lines[0]} cmd=${lines[1]}
   for _ in $(seq "$repeat"); do
     if ! (cd "$dir" && /usr/bin/time -f "%U %S %M" -o "$tmp/time" bash -c "$cmd" 2>"$tmp/log"); then
@@ -66,6 +86,7 @@ measure() {
     cpu=$(awk -v u="$user" -v s="$sys" 'BEGIN { printf "%.1f", u + s }')
     if [ -z "$best" ] || awk -v a="$cpu" -v b="$best" 'BEGIN { exit !(a < b) }'; then best=$cpu mem=$((kb / 1024)); fi
   done
+  cpu_s=$best peak_mb=$mem
   printf '| %s | %s | %s |\n' "$label" "$best" "$mem"
 }
 
@@ -78,7 +99,16 @@ echo "| translation unit | CPU s | peak MB |"
 echo "|---|---:|---:|"
 measure "umbrella header alone" "$root/examples/cornell.cpp" "$tmp/umbrella.cpp"
 measure "examples/cornell.cpp" "$root/examples/cornell.cpp"
-measure "CLI (dsl/cli/main.cpp)" "$root/dsl/cli/main.cpp"
+mapfile -t cli_units < <(sources_of photon_cli.dir)
+cli_total=0 cli_peak=0
+for unit in "${cli_units[@]}"; do
+  measure "CLI unit ${unit#"$root"/}" "$unit"
+  cli_total=$(awk -v a="$cli_total" -v b="$cpu_s" 'BEGIN { printf "%.1f", a + b }')
+  [ "$peak_mb" -gt "$cli_peak" ] && cli_peak=$peak_mb
+done
+if [ ${#cli_units[@]} -gt 1 ]; then
+  printf '| CLI, its %d units together | %s | %s |\n' "${#cli_units[@]}" "$cli_total" "$cli_peak"
+fi
 for unit in "$root"/src/*.cpp "$root"/dsl/src/*.cpp; do
   [ -f "$unit" ] && measure "compiled unit ${unit#"$root"/}" "$unit"
 done

@@ -8,7 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <photon/dsl/build.hpp>
+#include <photon/dsl/build/settings.hpp>
 #include <photon/dsl/settings_table.hpp>
 
 #include <array>

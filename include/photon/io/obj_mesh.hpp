@@ -132,7 +132,7 @@ ObjTriangles<S> obj_triangles(const tinyobj::ObjReader& reader, const std::strin
         throw ObjError(name, 0, "more than 2^32 - 1 vertices");
     out.positions.reserve(vertex_count);
     for (std::size_t i = 0; i < vertex_count; ++i) {
-        const Vec3<S> p(S(v[3 * i]), S(v[3 * i + 1]), S(v[3 * i + 2]));
+        const Vec3<S> p{S(v[3 * i]), S(v[3 * i + 1]), S(v[3 * i + 2])};  // braces: with parentheses clang reads a function declaration
         if (!is_finite(p))
             throw ObjError(name, obj_statement_line(text, "v", i), "vertex " + std::to_string(i + 1) + " is not finite");
         out.positions.push_back(p);

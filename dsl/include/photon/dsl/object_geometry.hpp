@@ -4,14 +4,33 @@
 // while it is read (to place objects on a surface, to fit one object to another). Each question
 // builds the object alone into a DefaultScene<double>, exactly as the render would build it, so
 // the answer agrees with what is rendered.
+//
+// Header-only by default. With PHOTON_DSL_SEPARATE_COMPILATION (photon::dsl_compiled) this header
+// only declares library_object_geometry(), which dsl/src/build.cpp compiles beside build<double>,
+// whose Builder<double> it reuses: a program that sets it up no longer instantiates the builder.
 
+#include <memory>
+
+#include "parser/parse_options.hpp"
+
+#if defined(PHOTON_DSL_SEPARATE_COMPILATION) && PHOTON_DSL_SEPARATE_COMPILATION && \
+    !defined(PHOTON_DSL_COMPILING_OBJECT_GEOMETRY)
+namespace photon::dsl {
+/// trace(), min_extent() and max_extent() answered by photon's own geometry.
+[[nodiscard]] std::shared_ptr<const ObjectGeometry> library_object_geometry();
+}  // namespace photon::dsl
+#else
 #include <algorithm>
 #include <limits>
-#include <memory>
 #include <optional>
 
 #include "build.hpp"
-#include "parser/parse_options.hpp"
+
+#if defined(PHOTON_DSL_COMPILING_OBJECT_GEOMETRY)
+#define PHOTON_DSL_OBJECT_GEOMETRY_INLINE
+#else
+#define PHOTON_DSL_OBJECT_GEOMETRY_INLINE inline
+#endif
 
 namespace photon::dsl {
 
@@ -34,7 +53,7 @@ inline DefaultScene<double> scene_of(const Object& obj) {
 }  // namespace detail
 
 /// trace(), min_extent() and max_extent() answered by photon's own geometry.
-[[nodiscard]] inline std::shared_ptr<const ObjectGeometry> library_object_geometry() {
+[[nodiscard]] PHOTON_DSL_OBJECT_GEOMETRY_INLINE std::shared_ptr<const ObjectGeometry> library_object_geometry() {
     auto g = std::make_shared<ObjectGeometry>();
     g->bounds = [](const Object& obj) {
         const DefaultScene<double> scene = detail::scene_of(obj);
@@ -65,3 +84,4 @@ inline DefaultScene<double> scene_of(const Object& obj) {
 }
 
 }  // namespace photon::dsl
+#endif

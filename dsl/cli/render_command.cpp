@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: MIT
+// `photon render`: reads, builds and renders a scene and writes the image, with a progress bar,
+// and on Ctrl-C the image so far (marked partial).
+
+#include "commands.hpp"
+#include "load_image_io.hpp"
+#include "scene_report.hpp"
+
+#include <photon/dsl/parser.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+
+namespace photon::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::atomic<bool> cancel_requested{false};
+
+extern "C" void on_interrupt(int) {
+    if (cancel_requested.load()) _exit(exit_interrupted);
+    cancel_requested.store(true);
+    static const char message[] =
+        "\nphoton: interrupted: stopping, the image so far will be written "
+        "(press Ctrl-C again to quit at once)\n";
+    [[maybe_unused]] const auto n = ::write(STDERR_FILENO, message, sizeof message - 1);
+}
+
+/// Progress of pass 2: a bar on a terminal, a line every 10% otherwise.
+class Progress {
+public:
+    explicit Progress(bool enabled) : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0), start_(Clock::now()) {}
+
+    /// One report of `phase` being `fraction` done; a new phase starts a new bar (or new lines).
+    void operator()(photon::RenderPhase phase, double fraction) {
+        if (!enabled_) return;
+        const std::lock_guard lock(mutex_);
+        if (phase != phase_) {
+            if (tty_ && last_ >= 0 && !line_done_) std::fputc('\n', stderr);
+            phase_ = phase;
+            start_ = Clock::now();
+            last_ = -1;
+            step_ = 0;
+            line_done_ = false;
+        }
+        const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+        const char* label = photon::to_string(phase);
+        if (tty_) {
+            if (fraction < 1.0 && last_ >= 0 && elapsed - last_ < 0.1) return;
+            last_ = elapsed;
+            constexpr int width = 40;
+            const int filled = int(fraction * width);
+            std::string bar(std::size_t(filled), '#');
+            bar.append(std::size_t(width - filled), '-');
+            const double left = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
+            std::fprintf(stderr, "\rphoton: %-24s [%s] %3d%%  %.1f s, %.1f s left  ", label, bar.c_str(),
+                         int(fraction * 100), elapsed, left);
+            if (fraction >= 1.0) {
+                std::fputc('\n', stderr);
+                line_done_ = true;
+            }
+        } else {
+            const int step = int(fraction * 10);
+            if (step <= step_) return;
+            step_ = step;
+            std::fprintf(stderr, "photon: %s %d%% (%.1f s)\n", label, step * 10, elapsed);
+        }
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (enabled_ && tty_ && last_ >= 0 && !line_done_) std::fputc('\n', stderr);
+    }
+
+private:
+    bool enabled_, tty_;
+    Clock::time_point start_;
+    std::mutex mutex_;
+    photon::RenderPhase phase_ = photon::RenderPhase::image;
+    double last_ = -1;
+    int step_ = 0;
+    bool line_done_ = false;
+};
+
+}  // namespace
+
+int run_render(SceneOptions& so, const RenderOptions& ro) {
+    const fs::path output(ro.output);
+    photon::image_module::check_writable_image_path(output);
+    dsl::BuildOptions bo;
+    bo.diagnostics = so.sink();
+    bo.overrides = ro.overrides;
+    // POV-Ray's image_width and image_height are the command line's size when it gives one.
+    auto size = [&](const char* key, unsigned otherwise) {
+        const auto it = bo.overrides.find(key);
+        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second))
+            return otherwise;  // build() reports it
+        return unsigned(std::get<std::uint64_t>(it->second));
+    };
+
+    const dsl::SceneDescription desc =
+        dsl::parse_file(so.scene, so.parse_options(size("width", 800), size("height", 600)));
+    dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
+    if (so.failed_strict()) return exit_error;
+    photon::RenderSettings& settings = built.settings;
+    if (ro.no_mis) settings.reference_mis = false;
+    const bool budget = settings.time_limit > 0 || settings.target_error > 0;
+    if (budget && settings.mode != photon::RenderMode::sppm && settings.mode != photon::RenderMode::reference)
+        std::cerr << "photon: warning: --time and --target-error apply to the sppm and reference modes; mode "
+                  << photon::to_string(settings.mode) << " renders once, as its settings ask\n";
+    // A budget without a pass count of its own decides when sppm stops.
+    if (budget && settings.mode == photon::RenderMode::sppm && !bo.overrides.count("sppm_passes") &&
+        !desc.settings.render.count("sppm_passes"))
+        settings.sppm_passes = photon::SettingsLimits::max_sppm_passes;
+    if (!ro.error_image.empty() && settings.mode != photon::RenderMode::sppm &&
+        settings.mode != photon::RenderMode::reference)
+        throw std::runtime_error("--error-image: only the sppm and reference modes estimate their error (mode " +
+                                 std::string(photon::to_string(settings.mode)) + ")");
+    if (!ro.error_image.empty()) photon::image_module::check_writable_image_path(ro.error_image);
+    if (!so.quiet) {
+        std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
+                  << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "
+                  << built.scene.materials().size() << " materials\n"
+                  << "photon: " << settings_line(settings) << '\n';
+        for (const std::string& line : plan_of(built, settings))
+            std::cerr << "photon: plan: " << line << '\n';
+    }
+
+    Progress progress(!so.quiet);
+    settings.progress = [&](photon::RenderPhase phase, double f) { progress(phase, f); };
+    const bool progressive = settings.mode == photon::RenderMode::sppm || (settings.mode == photon::RenderMode::reference && budget);
+    if (progressive && !so.quiet) {
+        // One line per pass (sppm) or round (reference): the unit the image improves by, and can
+        // be stopped after, with the image's estimated error.
+        settings.progress = {};
+        settings.on_pass = [sppm = settings.mode == photon::RenderMode::sppm,
+                            capped = !budget || bo.overrides.count("sppm_passes") || desc.settings.render.count("sppm_passes")](
+                               const photon::PassReport& r) {
+            char error[96] = "";
+            if (r.error.available)
+                std::snprintf(error, sizeof error, ", estimated error %.3g%% (worst block %.3g%%)", 100 * r.error.relative_rmse,
+                              100 * r.error.worst_block);
+            if (sppm && capped)
+                std::fprintf(stderr, "photon: sppm pass %u/%u (%.1f s)%s\n", r.pass, r.most, r.seconds, error);
+            else
+                std::fprintf(stderr, "photon: %s %u (%.1f s)%s\n", sppm ? "sppm pass" : "reference round", r.pass, r.seconds,
+                             error);
+        };
+    }
+    settings.cancel = &cancel_requested;
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+
+    photon::RenderResult result = photon::render(built.scene, built.camera, settings);
+    // A file with assumed_gamma G rendered numbers of a gamma-G space; the image is linear.
+    photon::decode_working_gamma(result.film, built.working_gamma);
+    const bool partial = result.stats.partial || cancel_requested.load();
+    if (partial) progress.finish();
+
+    photon::ImageWriteOptions wo;
+    wo.exposure = ro.exposure;
+    wo.metadata = {
+        {"photon:partial", partial ? "true" : "false"},
+        {"photon:scene", so.scene},
+        {"photon:mode", photon::to_string(settings.mode)},
+        {"photon:settings", settings_line(settings)},
+        {"photon:version", std::to_string(photon::version_major) + "." + std::to_string(photon::version_minor) + "." +
+                               std::to_string(photon::version_patch)}};
+    fs::path written = output;
+    std::error_code ec;
+    if (partial && fs::exists(output, ec)) {
+        // Never replace a finished image by an unfinished one.
+        written.replace_filename(output.stem().string() + ".partial" + output.extension().string());
+    }
+    photon::image_module::write_image(written, result.film, wo);
+    if (!ro.error_image.empty()) {
+        fs::path error_written = ro.error_image;
+        if (partial && fs::exists(error_written, ec))
+            error_written.replace_filename(error_written.stem().string() + ".partial" + error_written.extension().string());
+        if (result.error_image.pixels().empty())
+            std::cerr << "photon: warning: no error image: the render had no two independent halves (one pass, or one "
+                         "sample per pixel in one round)\n";
+        else
+            photon::image_module::write_image(error_written, result.error_image, wo);
+    }
+    if (!so.quiet || partial) {
+        std::cerr << "photon: wrote " << written.string()
+                  << (partial ? " (PARTIAL: interrupted, marked photon:partial=true)" : "") << '\n';
+    }
+    // A warning about one object was already reported at its place in the file when the scene was built.
+    if (!so.quiet || so.strict)
+        for (const photon::RenderWarning& w : result.stats.warnings)
+            if (!w.object) std::cerr << "photon: warning: " << w.message << '\n';
+    if (!ro.no_stats && !so.quiet) std::cout << photon::format_stats(result.stats);
+    return partial ? exit_interrupted : EXIT_SUCCESS;
+}
+
+}  // namespace photon::cli
