@@ -16,12 +16,6 @@
 
 namespace photon {
 
-/// n for an n x n grid with at least `samples` cells.
-[[nodiscard]] inline unsigned strata_per_axis(unsigned samples) noexcept {
-    const auto n = static_cast<unsigned>(std::ceil(std::sqrt(double(samples)) - 1e-9));
-    return n == 0 ? 1 : n;
-}
-
 /// What a camera, mirror or glass ray along `direction` (any length) sees when it leaves
 /// `scene`: the sky, or black without one.
 template <class SceneT, Scalar S>

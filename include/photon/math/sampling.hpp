@@ -11,6 +11,12 @@
 
 namespace photon {
 
+/// n for an n x n grid with at least `samples` cells.
+[[nodiscard]] inline unsigned strata_per_axis(unsigned samples) noexcept {
+    const auto n = static_cast<unsigned>(std::ceil(std::sqrt(double(samples)) - 1e-9));
+    return n == 0 ? 1 : n;
+}
+
 /// Uniform direction on the unit sphere by inversion (z uniform in [-1,1], phi uniform).
 /// pdf = 1 / (4 pi) per steradian.
 template <Scalar S> [[nodiscard]] Vec3<S> uniform_sphere(Vec2<S> u) noexcept {
