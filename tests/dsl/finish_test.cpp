@@ -20,12 +20,10 @@ namespace {
 /// with the warnings of parsing and building.
 MaterialParams<double> finish_material(const std::string& modifiers, std::vector<dsl::Diagnostic>& warnings,
                                        const std::string& prelude = "#version 3.7;\n") {
-    dsl::ParseOptions po;
-    po.diagnostics = collect(warnings);
-    const auto desc = dsl::parse_string(prelude + stage + "sphere { 0, 1 " + modifiers + " }\n", "test.pov", po);
-    dsl::BuildOptions bo;
-    bo.diagnostics = collect(warnings);
-    return dsl::build<double>(desc, bo).scene.material_of(0).params();
+    const std::string staging = prelude + stage;
+    StagedScene b = build_staged("sphere { 0, 1 " + modifiers + " }\n", {}, staging.c_str());
+    warnings.insert(warnings.end(), b.warnings.begin(), b.warnings.end());
+    return b.scene.material_of(0).params();
 }
 
 MaterialParams<double> finish_material(const std::string& modifiers, const std::string& prelude = "#version 3.7;\n") {

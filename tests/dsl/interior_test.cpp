@@ -18,13 +18,10 @@ namespace {
 /// The absorption of `sphere { 0, 1 pigment { rgbf 1 } INTERIOR }` after `prelude`, with the warnings.
 Absorption<double> interior_absorption_of(const std::string& interior, std::vector<dsl::Diagnostic>& warnings,
                                           const std::string& prelude = "") {
-    dsl::ParseOptions po;
-    po.diagnostics = collect(warnings);
-    const auto desc =
-        dsl::parse_string(prelude + stage + "sphere { 0, 1 pigment { rgbf 1 } " + interior + " }\n", "test.pov", po);
-    dsl::BuildOptions bo;
-    bo.diagnostics = collect(warnings);
-    return dsl::build<double>(desc, bo).scene.material_of(0).params().absorption;
+    const std::string staging = prelude + stage;
+    StagedScene b = build_staged("sphere { 0, 1 pigment { rgbf 1 } " + interior + " }\n", {}, staging.c_str());
+    warnings.insert(warnings.end(), b.warnings.begin(), b.warnings.end());
+    return b.scene.material_of(0).params().absorption;
 }
 
 bool mentions_fade(const std::vector<dsl::Diagnostic>& ws) { return all_messages(ws).find("fade") != std::string::npos; }
