@@ -55,6 +55,7 @@
 #include "light/sphere_light.hpp"
 
 #include "scene/camera.hpp"
+#include "scene/fog.hpp"
 #include "scene/scene.hpp"
 
 #include "photonmap/kdtree.hpp"
@@ -74,6 +75,7 @@
 #include "integrator/direct_lighting.hpp"
 #include "integrator/effect_switches.hpp"
 #include "integrator/environment_lighting.hpp"
+#include "integrator/fog_seen.hpp"
 #include "integrator/radiance.hpp"
 #include "integrator/reference_render.hpp"
 #include "integrator/render.hpp"

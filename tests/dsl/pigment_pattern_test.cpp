@@ -220,3 +220,53 @@ TEST_CASE("examples/scenes/textures.pov builds without warnings, and exported it
             CHECK(glm::length(x - y) < 1e-9);
         }
 }
+
+TEST_CASE("a pigment_map's patterned entries nest, moved by the pigment that holds them", "[dsl][texture]") {
+    // gradient y blends red (value 0) into a checker of size 0.5 (value 1); the outer `scale 2`
+    // moves both. Albedos are the colours times the finish's diffuse 0.6 (POV-Ray's default).
+    const PatternScene b = build_patterned(
+        "#declare Check = pigment { checker rgb 0, rgb 1 scale 0.5 }\n"
+        "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb <1, 0, 0>] [1 Check] } } }\n"
+        "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb <1, 0, 0>] [1 Check] } scale 2 } }\n"
+        "sphere { 0, 1 pigment { gradient y pigment_map { [0 rgb <1, 0, 0>] [1 Check translate 0.5 * x] } } }\n");
+    CHECK(places(b.warnings, "approximated pigment").empty());
+    // Point (0.1, 0.9, 0.1): gradient 0.9; checker cell (0, 1, 0), odd: its second colour, white.
+    const Rgb<double> a = albedo(b, 0, {0.1, 0.9, 0.1});
+    CHECK(a.x == Approx(0.6 * (0.1 * 1 + 0.9 * 1)));
+    CHECK(a.y == Approx(0.6 * 0.9));
+    // Scaled by 2: the point (0.2, 1.8, 0.2) is where (0.1, 0.9, 0.1) was.
+    const Rgb<double> s = albedo(b, 1, {0.2, 1.8, 0.2});
+    CHECK(s.x == Approx(a.x));
+    CHECK(s.y == Approx(a.y));
+    // The entry's own translation moves its checker alone: cell (1, 1, 0), even: black.
+    const Rgb<double> t = albedo(b, 2, {0.1, 0.9, 0.1});
+    CHECK(t.x == Approx(0.6 * 0.1));
+    CHECK(t.y == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("POV-Ray's cloudy skies (skies.inc, a pigment_map of patterns) build with no warning", "[dsl][texture][sky]") {
+    const std::filesystem::path includes = "/usr/share/povray-3.7/include";
+    if (!std::filesystem::exists(includes / "skies.inc")) {
+        WARN("povray-includes is not installed: skipped");
+        return;
+    }
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    po.include_paths.push_back(includes);
+    const auto desc = dsl::parse_string(std::string(pattern_stage) + "#include \"colors.inc\"\n#include \"skies.inc\"\nsky_sphere { S_Cloud1 }\n"
+                                        "sphere { 0, 1 }\n", "test.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto built = dsl::build<double>(desc, bo);
+    CHECK(all_messages(warnings).find("pigment_map") == std::string::npos);
+    const auto& sky = *built.scene.environment();
+    // Clouds: the sky's colour changes from direction to direction above the horizon.
+    double lo = 1e9, hi = -1e9;
+    for (int i = 0; i < 64; ++i) {
+        const double a = i * 0.1;
+        const double v = photon::average(sky.radiance(glm::normalize(Vec3<double>(std::cos(a), 0.6, std::sin(a)))));
+        lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    CHECK(hi - lo > 0.05);
+}

@@ -92,3 +92,56 @@ TEST_CASE("export-pov writes background and sky_sphere back", "[dsl][sky]") {
         for (int c = 0; c < 3; ++c) CHECK(got[c] == Approx(want[c]).margin(1e-9));
     }
 }
+
+TEST_CASE("fog builds the library's fogs as POV-Ray reads them, with no warning", "[dsl][fog]") {
+    const StagedScene b = build_sky("#declare F = fog { fog_type 2 distance 5 color rgbf <0.3, 0.4, 0.5, 0.2> fog_alt 2 }\n"
+                                    "fog { F fog_offset 0.5 up <0, 0, 3> rotate <90, 0, 0> turbulence <1, 2, 3> octaves 3 }\n"
+                                    "#declare Red = rgb <1, 0, 0>;\n"
+                                    "fog { Red 150 }\n"  // a colour identifier first; POV-Ray 1.5's bare distance
+                                    "fog { distance 0 rgb 1 }\n");  // POV-Ray skips a fog of distance 0
+    CHECK(places(b.warnings, "ignored effect").empty());
+    const auto fogs = b.scene.fogs();
+    REQUIRE(fogs.size() == 2);
+    const photon::Fog<double>& ground = fogs[0];
+    CHECK(ground.kind == photon::Fog<double>::Kind::ground);
+    CHECK(ground.distance == 5);
+    CHECK(ground.altitude == 2);
+    CHECK(ground.offset == 0.5);
+    CHECK(ground.filter == Approx(0.2));
+    CHECK(ground.colour[2] == Approx(0.5));
+    // rotate <90, 0, 0> turns +z to -y (POV-Ray's left-handed rotation), normalised.
+    CHECK(ground.up.y == Approx(-1).margin(1e-12));
+    CHECK(std::abs(ground.up.z) < 1e-12);
+    REQUIRE(ground.turbulence.has_value());
+    CHECK(ground.turbulence->scale == Vec3<double>(1, 2, 3));
+    CHECK(ground.turbulence->params.octaves == 3);
+    CHECK(fogs[1].kind == photon::Fog<double>::Kind::constant);
+    CHECK(fogs[1].distance == 150);
+    CHECK(fogs[1].colour == Rgb<double>(1, 0, 0));
+}
+
+TEST_CASE("a fog with a negative distance or fog_alt is an error at its place, and translate is said to do nothing", "[dsl][fog]") {
+    CHECK(error_of("fog { fog_type 2 distance 3 rgb 1 fog_alt -1 }\nsphere { 0, 1 }\n") ==
+          "1:1: fog: a ground fog's fog_alt must be >= 0, found -1");
+    CHECK(error_of("fog { distance -3 rgb 1 }\nsphere { 0, 1 }\n").rfind("1:1: fog: distance must be positive", 0) == 0);
+    CHECK(error_of("sphere { 0, 1 }\nfog { fog_type 3 distance 3 }\n").rfind("2:16:", 0) == 0);
+    const StagedScene b = build_sky("fog { distance 3 rgb 1 translate <0, 1, 0> }\n");
+    CHECK(all_messages(b.warnings).find("cannot be translated") != std::string::npos);
+}
+
+TEST_CASE("export-pov writes fogs back", "[dsl][fog]") {
+    const StagedScene a = build_sky("fog { fog_type 2 distance 5 rgbft <0.3, 0.4, 0.5, 0.2, 0.1> fog_alt 2 fog_offset 1 "
+                                    "up <1, 1, 0> turbulence 0.5 turb_depth 0.3 }\nfog { distance 9 rgb 0.5 }\n");
+    const auto b = dsl::build<double>(dsl::parse_string(dsl::export_pov(a.desc), "exported.pov"));
+    REQUIRE(b.scene.fogs().size() == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        const auto& x = a.scene.fogs()[i];
+        const auto& y = b.scene.fogs()[i];
+        CHECK(x.kind == y.kind);
+        CHECK(x.distance == Approx(y.distance));
+        CHECK(x.transmit == Approx(y.transmit));
+        CHECK(glm::length(x.up - y.up) < 1e-9);
+        CHECK(x.turbulence.has_value() == y.turbulence.has_value());
+        if (x.turbulence) CHECK(x.turbulence->depth == Approx(y.turbulence->depth));
+    }
+}

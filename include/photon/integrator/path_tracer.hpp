@@ -15,6 +15,7 @@
 // The sky (light/environment.hpp) is one more light with both strategies: a shadow ray drawn
 // as environment_lighting draws them (its density environment_direct_pdf), and the diffuse
 // continuation that leaves the scene. Camera and mirror rays that leave the scene see it.
+// Fog fades the segments of the path until its first diffuse vertex (fog_seen.hpp).
 
 #include <limits>
 #include <string>
@@ -24,6 +25,7 @@
 #include "../material/scatter.hpp"
 #include "direct_lighting.hpp"
 #include "environment_lighting.hpp"
+#include "fog_seen.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
@@ -66,11 +68,18 @@ public:
         Arrival arrival;
         for (unsigned vertex = 0; vertex < max_vertices; ++vertex) {
             const auto surface = scene_.intersect(ray);
+            std::optional<Facing<S>> f_here;
+            if (surface) f_here = facing(*surface->material, surface->hit.point, surface->hit.normal, ray.direction);
+            if (arrival.kind == Arrival::unseen)  // fog on what the camera sees, as radiance() applies it
+                if (const auto fog = fog_seen(scene_, ray, surface, f_here ? &*f_here : nullptr)) {
+                    result += throughput * fog->added;
+                    throughput *= fog->transmittance;
+                }
             if (arrival.kind != Arrival::unseen) result += throughput * lights_met(ray, surface, arrival, ctx);
             result += throughput * sky_met(ray, surface, arrival, ctx);
             if (!surface) break;
             const Material<S>& material = *surface->material;
-            const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
+            const Facing<S>& f = *f_here;
             throughput *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
             const Vec3<S>& x = surface->hit.point;
             const S error = intersection_error(x, ray.origin);

@@ -7,7 +7,8 @@
 // radiance is added where camera, mirror and glass rays meet it; gather rays do not see it.
 // What arrives along a ray that ran inside absorbing glass is scaled by its transmittance.
 // Camera, mirror and glass rays that leave the scene see the sky; gather rays do not (its
-// direct light is the shadow rays', what it brings after a bounce the photons').
+// direct light is the shadow rays', what it brings after a bounce the photons'). Fog fades
+// what camera, mirror and glass rays bring, not what gathers bring (fog_seen.hpp).
 
 #include <limits>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "../math/frame.hpp"
 #include "boundary_probe.hpp"
 #include "direct_lighting.hpp"
+#include "fog_seen.hpp"
 #include "photon_maps.hpp"
 #include "render_settings.hpp"
 
@@ -38,7 +40,11 @@ public:
     /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray.
     [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
         const auto surface = scene_.intersect(ray);
-        if (!surface) return sky_seen(scene_, ray.direction);
+        if (!surface) {
+            const Rgb<S> sky = sky_seen(scene_, ray.direction);
+            const auto fog = fog_seen(scene_, ray, surface, nullptr);
+            return fog ? fog->apply(sky) : sky;
+        }
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         const Vec3<S>& x = surface->hit.point;
@@ -75,7 +81,9 @@ public:
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, false);
-        return result * segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
+        result *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
+        const auto fog = fog_seen(scene_, ray, surface, &f);
+        return fog ? fog->apply(result) : result;
     }
 
 private:

@@ -7,7 +7,8 @@
 // probability proportional to its channel-averaged reflectance and the weight divided by that
 // probability, so every pass costs one path per pixel and the image stays unbiased in
 // expectation. Direct light is taken by shadow rays at every diffuse vertex on the way (as pm
-// does): deterministic, so it is not left to the choice.
+// does): deterministic, so it is not left to the choice. Fog fades every segment of the path,
+// as it fades radiance()'s camera, mirror and glass rays.
 
 #include <bit>
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include "../material/scatter.hpp"
 #include "../scene/camera.hpp"
 #include "direct_lighting.hpp"
+#include "fog_seen.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
@@ -70,13 +72,18 @@ template <class SceneT>
     for (unsigned depth = 1;; ++depth) {
         const auto surface = scene.intersect(ray);
         if (!surface) {  // left the scene: the sky, as radiance() sees it
-            path.direct += throughput * sky_seen(scene, ray.direction);
+            const auto fog = fog_seen(scene, ray, surface, nullptr);
+            path.direct += throughput * (fog ? fog->apply(sky_seen(scene, ray.direction)) : sky_seen(scene, ray.direction));
             return path;
         }
         length += surface->hit.t;
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         throughput *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
+        if (const auto fog = fog_seen(scene, ray, surface, &f)) {  // the fog's colour, then what shows through it
+            path.direct += throughput * fog->added;
+            throughput *= fog->transmittance;
+        }
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing

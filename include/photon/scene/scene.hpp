@@ -30,6 +30,7 @@
 #include "../geometry/triangle.hpp"
 #include "../geometry/triangle_mesh.hpp"
 #include "../light/environment.hpp"
+#include "fog.hpp"
 #include "../light/light.hpp"
 #include "../material/material.hpp"
 
@@ -117,6 +118,14 @@ public:
     /// Valid after commit().
     [[nodiscard]] const Ball<S>& environment_ball() const noexcept { return environment_ball_; }
 
+    /// Adds a fog (fog.hpp) that camera, mirror and glass rays see; throws std::invalid_argument
+    /// if it is invalid.
+    void add_fog(const Fog<S>& fog) {
+        fog.validate();
+        fogs_.push_back(fog);
+    }
+    [[nodiscard]] std::span<const Fog<S>> fogs() const noexcept { return fogs_; }
+
     /// Builds the acceleration structure. Call after the last add() and before any query
     /// (the commit step of Embree's API); queries are then const and thread-safe.
     void commit(BvhConfig config = {.max_leaf_size = 2});
@@ -187,6 +196,7 @@ private:
     std::vector<Material<S>> materials_;
     std::vector<Light<S>> lights_;
     std::optional<Environment<S>> environment_;
+    std::vector<Fog<S>> fogs_;
     Ball<S> environment_ball_{};
     Bvh<S> bvh_;
     std::vector<std::uint32_t> bvh_objects_;  ///< object id per BVH primitive (leaf order)

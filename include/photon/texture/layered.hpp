@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -39,8 +40,19 @@ template <Scalar S> struct FilterTransmit {
     S filter = S(0), transmit = S(0);
 };
 
+/// Per channel, the most a layer's colours reach: of colour, of opacity, of colour * opacity (its
+/// own share) and of passed(), each on its own (a bound, not one colour).
+template <Scalar S> struct LayerEnvelope {
+    Rgb<S> color{S(0)}, opacity{S(0)}, tinted{S(0)}, passed{S(0)};
+    void include(const LayerEnvelope& e) noexcept {
+        color = glm::max(color, e.color), opacity = glm::max(opacity, e.opacity);
+        tinted = glm::max(tinted, e.tinted), passed = glm::max(passed, e.passed);
+    }
+};
+
 /// One layer: a colour everywhere or a pigment whose map entries carry filter and transmit, and
-/// the layer's weight (what multiplies its own colour).
+/// the layer's weight (what multiplies its own colour). An entry may itself be a pigment (POV-Ray's
+/// pigment_map with patterned entries): another PigmentLayer, evaluated at the same point.
 template <Scalar S> class PigmentLayer {
 public:
     /// One colour everywhere. Throws std::invalid_argument on a colour or weight that is not
@@ -59,13 +71,58 @@ public:
         check();
     }
 
+    /// A pigment_map: entry i is `nested[i]` where that is set (its weight unused; placed in the
+    /// world by its own pigment, which carries this one's transformations after its own), else
+    /// the colour map's entry with `clear[i]`. Throws as above, or when `nested` does not have one
+    /// element per map entry.
+    PigmentLayer(Pigment<S> pigment, const std::vector<FilterTransmit<S>>& clear,
+                 std::vector<std::shared_ptr<const PigmentLayer>> nested, const Rgb<S>& weight)
+        : PigmentLayer(std::move(pigment), clear, weight) {
+        if (nested.size() != entries_.size())
+            throw std::invalid_argument("layered texture: one nested pigment (or none) is needed per map entry");
+        if (std::any_of(nested.begin(), nested.end(), [](const auto& n) { return n != nullptr; })) nested_ = std::move(nested);
+    }
+
     /// The layer's colour, filter and transmit at world point `p`.
     [[nodiscard]] LayerColor<S> operator()(const Vec3<S>& p) const noexcept {
         if (!pigment_) return entries_.front();
         const auto where = pigment_->colors().locate(pigment_->value(p));
-        const LayerColor<S>& a = entries_[where.prev];
+        const LayerColor<S> a = entry(where.prev, p);
         if (where.prev == where.cur) return a;
-        return blend(a, entries_[where.cur], where.fraction);
+        return blend(a, entry(where.cur, p), where.fraction);
+    }
+    [[nodiscard]] bool has_nested() const noexcept { return !nested_.empty(); }
+    /// The most this layer's colours reach, per channel (exact at the entries; between two
+    /// entries of which one is nested, colour times opacity is bounded by their maxima's product).
+    [[nodiscard]] LayerEnvelope<S> envelope() const noexcept {
+        LayerEnvelope<S> env;
+        const auto of = [&](std::size_t i) {
+            if (has_nested() && nested_[i]) return nested_[i]->envelope();
+            const LayerColor<S>& c = entries_[i];
+            const Rgb<S> o(c.opacity());
+            return LayerEnvelope<S>{c.color, o, c.color * o, c.passed()};
+        };
+        for (std::size_t i = 0; i < entries_.size(); ++i) {
+            const LayerEnvelope<S> e = of(i);
+            env.include(e);
+            if (i == 0 || !pigment_) continue;
+            const LayerEnvelope<S> before = of(i - 1);
+            if (has_nested() && (nested_[i] || nested_[i - 1])) {
+                env.tinted = glm::max(env.tinted, glm::max(e.color, before.color) * glm::max(e.opacity, before.opacity));
+            } else {  // colour * opacity along the blend is a quadratic: its top, if inside
+                for (int ch = 0; ch < 3; ++ch) {
+                    const auto g = [&](const LayerColor<S>& c) { return double(c.color[ch]) * double(c.opacity()); };
+                    const double g0 = g(entries_[i - 1]), g1 = g(entries_[i]),
+                                 gh = g(blend(entries_[i - 1], entries_[i], S(0.5)));
+                    const double a = 2 * g0 - 4 * gh + 2 * g1, b = -3 * g0 + 4 * gh - g1;
+                    if (a < 0) {
+                        const double x = -b / (2 * a);
+                        if (x > 0 && x < 1) env.tinted[ch] = std::max(env.tinted[ch], S((a * x + b) * x + g0));
+                    }
+                }
+            }
+        }
+        return env;
     }
     [[nodiscard]] const Rgb<S>& weight() const noexcept { return weight_; }
     /// The colours the layer blends between (one for a uniform layer).
@@ -89,8 +146,13 @@ private:
         }
     }
 
+    [[nodiscard]] LayerColor<S> entry(std::size_t i, const Vec3<S>& p) const noexcept {
+        return has_nested() && nested_[i] ? (*nested_[i])(p) : entries_[i];
+    }
+
     std::optional<Pigment<S>> pigment_;  ///< none: entries_ holds the one colour
     std::vector<LayerColor<S>> entries_;
+    std::vector<std::shared_ptr<const PigmentLayer>> nested_;  ///< empty, or one per entry (null: the colour)
     Rgb<S> weight_;
 };
 
@@ -133,6 +195,11 @@ private:
     [[nodiscard]] Rgb<S> compute_bound() const noexcept {
         Rgb<S> below(S(0));
         for (const PigmentLayer<S>& layer : layers_) {
+            if (layer.has_nested()) {  // each term at its own maximum: a bound
+                const LayerEnvelope<S> env = layer.envelope();
+                below = env.tinted * layer.weight() + env.passed * below;
+                continue;
+            }
             const auto& e = layer.entries();
             Rgb<S> best(S(0));
             for (int ch = 0; ch < 3; ++ch) {
@@ -180,9 +247,7 @@ public:
         Rgb<S> through(S(1));
         for (std::size_t i = layers_.size(); i-- > 0;) {
             if (highlighted_[i]) bound_ += through;
-            Rgb<S> most(S(0));
-            for (const LayerColor<S>& c : layers_[i].entries()) most = glm::max(most, c.passed());
-            through *= most;
+            through *= layers_[i].envelope().passed;
         }
     }
 

@@ -19,6 +19,7 @@
 #include "build/material.hpp"
 #include "build/scene_builder.hpp"
 #include "build/settings.hpp"
+#include "build/fog.hpp"
 #include "build/sky.hpp"
 #include "build/warnings.hpp"
 #include "description.hpp"
@@ -66,6 +67,7 @@ template <Scalar S>
     }
     DefaultScene<S> scene;
     if (auto sky = build_environment<S>(desc, warn)) scene.set_environment(std::move(*sky));
+    for (const Fog<S>& fog : build_fogs<S>(desc)) scene.add_fog(fog);
     builder.add_all(scene);
     scene.commit();
     // Said here, where the object's place in the file is known, for `check` and `render` alike

@@ -107,6 +107,8 @@ inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient",
 
 /// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).
+struct Pigment;
+
 struct PigmentPattern {
     std::string name;                ///< one of evaluated_patterns
     Vector3 gradient{1, 0, 0};       ///< `gradient V`
@@ -123,6 +125,9 @@ struct PigmentPattern {
     /// The colours the value picks: the color_map as written, POV-Ray's default map, or for
     /// checker its two colours at 0 and 1, for hexagon its three at 0, 1/2 and 1.
     std::vector<std::pair<double, Color>> colors;
+    /// A pigment_map's patterned entries, one per colour (null where the entry is a colour); empty
+    /// when none is patterned. `colors` then holds each entry's average colour.
+    std::vector<std::shared_ptr<const Pigment>> nested;
 
     friend bool operator==(const PigmentPattern&, const PigmentPattern&) = default;
 };
@@ -452,12 +457,26 @@ struct SkySphere {
     SourceLocation at;
 };
 
+/// `fog { ... }`: POV-Ray's fog, made the library's Fog (scene/fog.hpp) as written.
+struct FogDescription {
+    int type = 1;           ///< fog_type: 1 constant, 2 ground
+    double distance = 0.0;  ///< 0: POV-Ray ignores the fog
+    Color color;
+    double altitude = 0.0, offset = 0.0;  ///< fog_alt, fog_offset (ground fog)
+    Vector3 up{0.0, 1.0, 0.0};            ///< turned by the fog's rotate, scale and matrix
+    std::optional<Vector3> turbulence;    ///< set by `turbulence` (octaves, omega, lambda alone start it at 0)
+    int octaves = 6;
+    double omega = 0.5, lambda = 2.0, turb_depth = 0.5;
+    SourceLocation at;
+};
+
 /// A whole scene file, evaluated.
 struct SceneDescription {
     std::optional<double> version;  ///< from `#version`
     std::optional<CameraDescription> camera;
     std::optional<Color> background;      ///< `background { COLOR }`, the last one written
     std::optional<SkySphere> sky_sphere;  ///< the last one written
+    std::vector<FogDescription> fogs;     ///< every one written, in order (POV-Ray composes them all)
     std::vector<Object> objects;  ///< top-level statements, lights included, in file order
     GlobalSettings settings;
     std::vector<std::shared_ptr<const SourceFile>> files;  ///< the scene file and every include, in reading order

@@ -40,6 +40,7 @@ public:
         settings(d.settings, d.version);
         if (d.camera) camera(*d.camera);
         sky(d);
+        fogs(d);
         for (const Object& o : d.objects) object(o, 0);
         return out_.str();
     }
@@ -177,13 +178,46 @@ private:
         out_ << "}\n\n";
     }
 
+    /// Every fog, as read (its transformations already turned `up`).
+    void fogs(const SceneDescription& d) {
+        for (const FogDescription& f : d.fogs) {
+            out_ << "fog {\n";
+            indent(1), out_ << "fog_type " << f.type << " distance " << num(f.distance) << ' ' << rgbft(f.color) << '\n';
+            if (f.type == 2)
+                indent(1), out_ << "fog_offset " << num(f.offset) << " fog_alt " << num(f.altitude) << " up " << vec(f.up) << '\n';
+            if (f.turbulence)
+                indent(1), out_ << "turbulence " << vec(*f.turbulence) << " octaves " << f.octaves << " omega " << num(f.omega)
+                                << " lambda " << num(f.lambda) << " turb_depth " << num(f.turb_depth) << '\n';
+            out_ << "}\n\n";
+        }
+    }
+
     /// An evaluated pattern with every modifier that differs from POV-Ray's default, its colours
     /// and its transformation.
     void pigment_pattern(const PigmentPattern& p, const Transform& placement) {
-        out_ << "pigment { " << p.name;
+        out_ << "pigment { ";
+        pigment_body(p, placement);
+        out_ << " }\n";
+    }
+
+    /// PIGMENT_BODY: the pattern, its colours or pigment_map, its modifiers and its placement.
+    void pigment_body(const PigmentPattern& p, const Transform& placement) {
+        out_ << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
         if (p.name == "checker" || p.name == "hexagon") {  // listed colours
             for (std::size_t i = 0; i < p.colors.size(); ++i) out_ << (i ? ", " : " ") << rgbft(p.colors[i].second);
+        } else if (!p.nested.empty()) {  // a pigment_map: its patterned entries in their own space
+            out_ << " pigment_map {";
+            for (std::size_t i = 0; i < p.colors.size(); ++i) {
+                out_ << " [" << num(p.colors[i].first) << ' ';
+                if (const auto& n = p.nested[i]) {
+                    pigment_body(*n->pattern, n->transform);
+                } else {
+                    out_ << rgbft(p.colors[i].second);
+                }
+                out_ << ']';
+            }
+            out_ << " }";
         } else {
             out_ << " color_map {";
             for (const auto& [v, c] : p.colors) out_ << " [" << num(v) << ' ' << rgbft(c) << ']';
@@ -191,7 +225,6 @@ private:
         }
         pattern_modifiers(p);
         placement_matrix(placement);
-        out_ << " }\n";
     }
 
     /// The modifiers of an evaluated pattern that differ from POV-Ray's defaults.

@@ -66,6 +66,7 @@ namespace photon::dsl {
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/sky.hpp"
+#include "parser/fog.hpp"
 #include "parser/statements.hpp"
 
 namespace photon::dsl {

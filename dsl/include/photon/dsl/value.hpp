@@ -83,6 +83,8 @@ struct MaterialBlock {
 struct BlendMap {
     std::string keyword;
     std::vector<std::pair<double, Color>> entries;
+    /// A pigment_map's entries as pigments where patterned (null where a colour); empty otherwise.
+    std::vector<std::shared_ptr<const Pigment>> pigments;
     std::optional<Finish> finish;
     bool reduced = false;  ///< an entry was a patterned pigment or texture, kept as its average colour
 };
@@ -115,7 +117,7 @@ struct Array {
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
                                CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
-                               BlendMap, IgnoredBlock, Normal, SkySphere>;
+                               BlendMap, IgnoredBlock, Normal, SkySphere, FogDescription>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -168,8 +170,10 @@ struct Value {
             return "a " + std::get<IgnoredBlock>(v).keyword;
         case 15:
             return "a normal";
-        default:
+        case 16:
             return "a sky_sphere";
+        default:
+            return "a fog";
     }
 }
 

@@ -71,34 +71,46 @@ inline SourceLocation finish_item(const Finish& f, const char* key, const Source
     return f.at.known() ? f.at : fallback;
 }
 
-/// The layer as the library's PigmentLayer: its colours with filter and transmit (within POV-Ray's
-/// physical range, reported to `warn` otherwise), its pattern placed by `to_world`, and `weight`.
+/// The pattern as the library's PigmentLayer: its colours with filter and transmit (within
+/// POV-Ray's physical range, reported to `warn` otherwise), placed in the world by `placement`,
+/// and `weight`. A pigment_map's patterned entries nest: each placed by its own transformations,
+/// then `placement` (POV-Ray transforms a map's pigments with the pigment that holds them).
 template <Scalar S>
-PigmentLayer<S> library_layer(const Texture& t, const Transform& to_world, const Vector3& weight, Warnings& warn,
-                              const SourceLocation& at) {
-    auto physical = [&](const Color& c) {
-        const Clamped<Color> p = physical_pigment(c);
-        if (!p.message.empty()) warn(at, p.message, "approximated pigment", "pigment");
-        return p.value;
-    };
-    if (!t.pigment.pattern) {
-        const Color c = physical(t.pigment.color);
-        return PigmentLayer<S>(LayerColor<S>{Rgb<S>(c.rgb), S(c.filter), S(c.transmit)}, Rgb<S>(weight));
-    }
-    const PigmentPattern& pattern = *t.pigment.pattern;
+PigmentLayer<S> pattern_layer(const PigmentPattern& pattern, const Transform& placement, const Vector3& weight,
+                              Warnings& warn, const SourceLocation& at) {
     std::vector<typename ColorMap<S>::Entry> entries;
     std::vector<FilterTransmit<S>> clear;
     for (const auto& [v, written] : pattern.colors) {
-        const Color c = physical(written);
-        entries.push_back({v, Rgb<S>(c.rgb)});
-        clear.push_back({S(c.filter), S(c.transmit)});
+        const Clamped<Color> p = physical_pigment(written);
+        if (!p.message.empty()) warn(at, p.message, "approximated pigment", "pigment");
+        entries.push_back({v, Rgb<S>(p.value.rgb)});
+        clear.push_back({S(p.value.filter), S(p.value.transmit)});
     }
-    const Transform placement = t.pigment.transform.then(to_world);
     Affine<double> a;
     a.linear = placement.linear;
     a.translation = placement.translation;
-    return PigmentLayer<S>(photon::Pigment<S>(library_pattern(pattern), ColorMap<S>(std::move(entries)), a), clear,
-                           Rgb<S>(weight));
+    photon::Pigment<S> pigment(library_pattern(pattern), ColorMap<S>(std::move(entries)), a);
+    if (pattern.nested.empty()) return PigmentLayer<S>(std::move(pigment), clear, Rgb<S>(weight));
+    std::vector<std::shared_ptr<const PigmentLayer<S>>> nested;
+    for (const auto& n : pattern.nested)
+        nested.push_back(n ? std::make_shared<const PigmentLayer<S>>(pattern_layer<S>(
+                                 *n->pattern, n->transform.then(placement), Vector3(1.0), warn, n->at.known() ? n->at : at))
+                           : nullptr);
+    return PigmentLayer<S>(std::move(pigment), clear, std::move(nested), Rgb<S>(weight));
+}
+
+/// The layer as the library's PigmentLayer: its pigment (see pattern_layer) placed by its own
+/// transformations then `to_world`, and `weight`.
+template <Scalar S>
+PigmentLayer<S> library_layer(const Texture& t, const Transform& to_world, const Vector3& weight, Warnings& warn,
+                              const SourceLocation& at) {
+    if (!t.pigment.pattern) {
+        const Clamped<Color> p = physical_pigment(t.pigment.color);
+        if (!p.message.empty()) warn(at, p.message, "approximated pigment", "pigment");
+        const Color& c = p.value;
+        return PigmentLayer<S>(LayerColor<S>{Rgb<S>(c.rgb), S(c.filter), S(c.transmit)}, Rgb<S>(weight));
+    }
+    return pattern_layer<S>(*t.pigment.pattern, t.pigment.transform.then(to_world), weight, warn, at);
 }
 
 }  // namespace layers_detail

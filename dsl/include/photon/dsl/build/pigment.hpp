@@ -35,10 +35,13 @@ namespace photon::dsl {
     return p.rgb * std::max(0.0, 1.0 - p.filter - p.transmit);
 }
 
-/// The largest albedo_color of the pattern's colours, per channel.
+/// The largest albedo_color of the pattern's colours, per channel (of a pigment_map's
+/// patterned entries, theirs).
 [[nodiscard]] inline Vector3 max_albedo_color(const PigmentPattern& p) {
     Vector3 m(0.0);
-    for (const auto& [v, c] : p.colors) m = glm::max(m, albedo_color(c));
+    for (std::size_t i = 0; i < p.colors.size(); ++i)
+        m = glm::max(m, i < p.nested.size() && p.nested[i] ? max_albedo_color(*p.nested[i]->pattern)
+                                                            : albedo_color(p.colors[i].second));
     return m;
 }
 

@@ -457,7 +457,13 @@ private:
                 return m.id;
         const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
         try {
-            if (pattern) p.diffuse_texture = AnyReflectanceField<S>(library_pigment<S>(*pattern, placement));
+            // A pigment_map of patterned pigments: one layer (its colour times its opacity, as
+            // library_pigment's albedos) whose entries nest.
+            if (pattern && !pattern->nested.empty())
+                p.diffuse_texture = AnyReflectanceField<S>(LayeredPigment<S>(
+                    {layers_detail::pattern_layer<S>(*pattern, placement, Vector3(1.0), warn_, at)}));
+            else if (pattern)
+                p.diffuse_texture = AnyReflectanceField<S>(library_pigment<S>(*pattern, placement));
             if (normal) p.normal_field = AnyNormalField<S>(library_normal<S>(*normal, in.normal_placement));
             const MaterialId id = scene_->add_material(Material<S>(p));
             materials_.push_back({p, pattern, placement, made_normal, id});

@@ -117,7 +117,7 @@ inline bool Parser::is_reserved(std::string_view w) const {
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
            one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, string_functions) ||
            one_of(w, function_words) || one_of(w, blend_map_keywords) ||
-           one_of(w, ignored_declarable_blocks) || w == "sky_sphere";
+           one_of(w, ignored_declarable_blocks) || w == "sky_sphere" || w == "fog";
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -250,6 +250,7 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     // their use by name is known (the warning comes where they are used).
     if (one_of(w, blend_map_keywords)) return parse_blend_map(next());
     if (w == "sky_sphere") return parse_sky_sphere_block(next());
+    if (w == "fog") return parse_fog_block(next());
     if (one_of(w, ignored_declarable_blocks)) {
         const Nest nest(*this, t.location);
         skip_block(next());

@@ -332,6 +332,9 @@ private:
     void parse_sky_sphere(const Token& kw);
     SkySphere parse_sky_sphere_block(const Token& kw);
 
+    // fog.hpp
+    FogDescription parse_fog_block(const Token& kw);
+
     // patterns.hpp
     struct PatternState;
     bool parse_pattern_item(PatternState& st);

@@ -331,7 +331,9 @@ inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
     } else if (map.keyword == "pigment_map") {
         Pigment p = parse_pigment_body(open, Pigment{});
         map.entries.push_back({v, p.color});
-        map.reduced = map.reduced || p.pattern != nullptr;
+        map.pigments.resize(map.entries.size() - 1);  // entries before it were colours
+        map.pigments.push_back(p.pattern ? std::make_shared<const Pigment>(std::move(p)) : nullptr);
+        map.reduced = map.reduced || map.pigments.back() != nullptr;
     } else if (map.keyword == "texture_map") {
         Texture tex = parse_texture_body(open, default_texture_);
         map.entries.push_back({v, tex.pigment.color});

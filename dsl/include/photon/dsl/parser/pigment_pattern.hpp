@@ -30,7 +30,9 @@ inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const Pat
         why_not = "a `" + st.map->keyword + "` is not a pigment's colours";
         return nullptr;
     }
-    if ((st.map && st.map->reduced) || st.reduced) {
+    // A pigment_map's patterned entries nest (build/layers.hpp); checker's or hexagon's listed
+    // pigments do not yet.
+    if ((st.map && st.map->reduced && st.map->keyword != "pigment_map") || st.reduced) {
         why_not = "its entries are patterned pigments, which photon does not nest";
         return nullptr;
     }
@@ -46,10 +48,12 @@ inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const Pat
             std::vector<Color> colors = default_listed_colors(name);
             for (std::size_t i = 0; i < st.listed.size() && i < colors.size(); ++i) colors[i] = st.listed[i];
             p.colors.clear();
+            p.nested.clear();
             for (std::size_t i = 0; i < colors.size(); ++i) p.colors.push_back({double(i) / double(colors.size() - 1), colors[i]});
         }
     } else if (st.map) {
         p.colors = st.map->entries;
+        p.nested = st.map->reduced ? st.map->pigments : std::vector<std::shared_ptr<const Pigment>>{};
     } else if (!st.base || st.base->name != name) {
         p.colors = default_color_map(name);
     }

@@ -58,7 +58,12 @@ inline void Parser::parse_statements() {
                 parse_sky_sphere(next());
                 continue;
             }
-            if (one_of(w, {"fog", "rainbow", "media"})) {
+            // FOG: fog { ... }, one more fog over the others (parser/fog.hpp)
+            if (w == "fog") {
+                scene_.fogs.push_back(parse_fog_block(next()));
+                continue;
+            }
+            if (one_of(w, {"rainbow", "media"})) {
                 skip_effect(next());
                 continue;
             }
