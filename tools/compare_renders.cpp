@@ -95,7 +95,9 @@ std::vector<int> label_pixels(const dsl::BuiltScene<float>& built, const std::ve
                               unsigned height) {
     const auto& scene = built.scene;
     auto region_of = [&](float u, float v) {
-        const auto hit = scene.intersect(built.camera.ray(u, v));
+        const auto ray = built.camera.ray(u, v);
+        if (!ray) return -1;
+        const auto hit = scene.intersect(*ray);
         if (!hit) return -1;
         for (std::size_t r = 0; r < regions.size(); ++r)
             if (regions[r].contains(hit->hit)) return int(r);

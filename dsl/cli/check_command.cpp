@@ -49,9 +49,23 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
     std::cout << "scene      " << file << " (" << desc.files.size() << " file" << (desc.files.size() == 1 ? "" : "s")
               << ")\n";
     const auto& cam = b.camera;
-    const float hfov = 2.0f * std::atan(0.5f * glm::length(cam.right()) / glm::length(cam.direction())) * 180.0f / pi<float>;
-    std::cout << "camera     location " << vec(cam.location()) << ", direction " << vec(cam.direction()) << ", right "
-              << vec(cam.right()) << ", up " << vec(cam.up()) << " (horizontal field of view " << hfov << " deg)\n";
+    std::cout << "camera     " << to_string(cam.projection()) << ", location " << vec(cam.location()) << ", direction "
+              << vec(cam.direction()) << ", right " << vec(cam.right()) << ", up " << vec(cam.up());
+    switch (cam.projection()) {
+        case Projection::perspective:
+            std::cout << " (horizontal field of view "
+                      << 2.0f * std::atan(0.5f * glm::length(cam.right()) / glm::length(cam.direction())) * 180.0f / pi<float>
+                      << " deg)";
+            break;
+        case Projection::orthographic: break;
+        case Projection::spherical:
+            std::cout << ", angles " << cam.frame().angle << " x " << cam.frame().vertical_angle << " deg";
+            break;
+        default: std::cout << ", angle " << cam.frame().angle << " deg";
+    }
+    if (cam.has_focal_blur())
+        std::cout << ", aperture " << cam.focal_blur().aperture << ", focal distance " << cam.focal_blur().focal_distance;
+    std::cout << '\n';
     std::cout << "lights     " << scene.lights().size() << '\n';
     for (const auto& light : scene.lights()) {
         const float radius = light_radius(light);

@@ -226,20 +226,31 @@ TEST_CASE("effects photon does not render are ignored with a warning", "[dsl][de
 
 TEST_CASE("camera types and lights photon lacks are approximated", "[dsl][degradation]") {
     const Built b = build_text(
-        "camera { orthographic location <0, 0, -5> look_at 0 }\n"
+        "camera { mesh_camera { 1 0 mesh { triangle { 0, x, y } } } location <0, 0, -5> look_at 0 }\n"
         "light_source { <0, 5, -5>, 1 parallel point_at 0 }\n"
         "light_source { <0, 5, -5>, 1 cylinder radius 2 falloff 3 point_at 0 }\n"
         "light_source { <0, 5, -5>, 1 projected_through { sphere { 0, 1 } } }\n"
         "sphere { 0, 1 }\n");
-    CHECK(places(b.warnings, "approximated camera") == std::vector<std::string>{"1:10 orthographic"});
+    CHECK(places(b.warnings, "approximated camera") == std::vector<std::string>{"1:10 mesh_camera"});
     CHECK(places(b.warnings, "approximated light") == std::vector<std::string>{"2:30 parallel", "3:30 cylinder"});
     CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"4:30 projected_through"});
     CHECK(b.lights == 3);
     CHECK_FALSE(std::get<dsl::LightSource>(b.desc.objects[1].shape).spotlight.has_value());  // the cylinder light
-    const Parsed fish = parse("camera { fisheye angle 360 location 0 }\nlight_source { 0, 1 }\nsphere { z, 1 }\n");
-    CHECK(places(fish.warnings, "approximated camera") == std::vector<std::string>{"1:10 fisheye", "1:24 angle"});
-    CHECK_FALSE(fish.desc.camera->angle.has_value());
-    CHECK_THAT(error_of("camera { angle 360 }\nsphere { 0, 1 }"), Contains("camera `angle` must be between 0 and 180"));
+    // POV-Ray's other camera types, its focal blur and its orthographic bare `angle` are exact: no warning.
+    for (const char* type : {"orthographic", "fisheye angle 360", "ultra_wide_angle angle 200", "omnimax", "panoramic",
+                             "cylinder 1", "cylinder 4 angle 120", "spherical angle 180, 90", "orthographic angle",
+                             "aperture 0.5 blur_samples 7, 20 focal_point <0, 0, 1> confidence 0.9 variance 0.001"}) {
+        const Built t = build_text(std::string("camera { ") + type + " location <0, 0, -5> look_at 0 }\n"
+                                   "light_source { <0, 5, -5>, 1 }\nsphere { 0, 1 }\n");
+        INFO(type << ": " << all_messages(t.warnings));
+        CHECK(t.warnings.empty());
+    }
+    const Parsed ray_normal = parse("camera { normal { bumps 0.5 } }\nlight_source { 0, 1 }\nsphere { z, 1 }\n");
+    CHECK(places(ray_normal.warnings, "ignored effect") == std::vector<std::string>{"1:10 normal"});
+    CHECK_THAT(error_of("camera { angle 180 }\nsphere { 0, 1 }"), Contains("camera `angle` must be below 180 degrees"));
+    CHECK_THAT(error_of("camera { orthographic angle 200 }\nsphere { 0, 1 }"), Contains("must be below 180"));
+    CHECK_THAT(error_of("camera { fisheye angle -1 }\nsphere { 0, 1 }"), Contains("must not be negative"));
+    CHECK_THAT(error_of("camera { cylinder 5 }\nsphere { 0, 1 }"), Contains("cylinder camera"));
 }
 
 TEST_CASE("every form of normal parses, and those photon cannot evaluate are ignored", "[dsl][degradation]") {

@@ -188,7 +188,7 @@ TEST_CASE("values out of range", "[dsl][errors]") {
     CHECK(error_of("box { 0, 1 matrix <1,0,0, 0,0,0, 0,0,1, 0,0,0> }") ==
           "1:19: the matrix is singular (its 3x3 part has determinant 0)");
     CHECK(error_of("camera { location 0 angle 190 }\nsphere { 0, 1 }") ==
-          "1:27: camera `angle` must be between 0 and 180 degrees, found 190");
+          "1:27: camera `angle` must be below 180 degrees, found 190");
     CHECK(error_of("camera { location 0 look_at 0 }\nsphere { 0, 1 }") == "1:21: camera look_at equals its location");
     CHECK(error_of("light_source { 0, 1 area_light x, z, 0, 3 }") ==
           "1:38: the number of lights along the first axis must be a whole number from 1 to 1024, found 0");

@@ -228,9 +228,9 @@ TEST_CASE("the camera follows POV-Ray's order: up/right, angle, look_at, transfo
             "camera { location <0, 0, -5> look_at 0 up y right x*4/3 angle 60 }\n"
             "light_source { <0, 5, 0>, rgb 1 fade_distance 1 fade_power 2 }\n"
             "sphere { 0, 1 finish { ambient 0 } }\n");
-        const Ray<double> centre = b.camera.ray(0.5, 0.5);
+        const Ray<double> centre = *b.camera.ray(0.5, 0.5);
         CHECK(near(centre.direction, {0, 0, 1}));
-        const Ray<double> left = b.camera.ray(0.0, 0.5);
+        const Ray<double> left = *b.camera.ray(0.0, 0.5);
         CHECK(left.direction.x < 0);  // u = 0 is the left edge: -x, as in POV-Ray
         CHECK(std::atan2(-left.direction.x, left.direction.z) * 360 / pi_d == Approx(60));
     }

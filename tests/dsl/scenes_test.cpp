@@ -76,7 +76,7 @@ void check_same_scene(const DefaultScene<S>& a, const PinholeCamera<S>& ca, cons
     }
     for (S u : {S(0), S(0.25), S(0.5), S(0.9), S(1)})
         for (S v : {S(0), S(0.3), S(0.5), S(1)}) {
-            const Ray<S> ra = ca.ray(u, v), rb = cb.ray(u, v);
+            const Ray<S> ra = *ca.ray(u, v), rb = *cb.ray(u, v);
             CHECK(close(ra.origin, rb.origin, eps));
             CHECK(close(ra.direction, rb.direction, eps));
         }

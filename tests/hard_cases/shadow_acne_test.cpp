@@ -38,7 +38,7 @@ template <class S> struct LitPlane {
 
     /// Exact radiance at the centre of pixel (x, y), from the camera ray computed in double.
     [[nodiscard]] double expected(unsigned x, unsigned y, unsigned width, unsigned height_px) const {
-        const Ray<double> ray = make_camera<double>(height).ray((x + 0.5) / width, (y + 0.5) / height_px);
+        const Ray<double> ray = *make_camera<double>(height).ray((x + 0.5) / width, (y + 0.5) / height_px);
         const double t = (height - ray.origin.y) / ray.direction.y;
         const Vec3<double> p = ray.at(t);
         const Vec3<double> to_light = light - p;

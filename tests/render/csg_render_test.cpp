@@ -50,7 +50,7 @@ struct FloorView {
               PinholeCamera<double> eye = PinholeCamera<double>::look_at({2.2, 3.2, 0}, {0, 0, 0}, {0, 1, 0}, 30, 1.0))
         : camera(eye) {
         auto floor_point = [&](double u, double v) -> std::optional<Vec3<double>> {
-            const auto hit = scene.intersect(camera.ray(u, v));
+            const auto hit = scene.intersect(*camera.ray(u, v));
             if (!hit || hit->object != 0 || glm::length(hit->hit.point) > window) return std::nullopt;
             return hit->hit.point;
         };

@@ -199,7 +199,7 @@ TEST_CASE("an ambient radiance is seen by the camera and lights nothing, in ever
         for (unsigned x = 0; x < width; ++x) {
             int object = -2;
             for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.5}}) {
-                const auto hit = dark->intersect(camera.ray((x + u) / width, (y + v) / height));
+                const auto hit = dark->intersect(*camera.ray((x + u) / width, (y + v) / height));
                 const int o = hit ? int(hit->object) : -1;
                 object = object == -2 || object == o ? o : -3;
             }

@@ -51,7 +51,7 @@ template <Scalar S> struct LeaningFloor {
     /// Lambert's law with the leaning normal (or, `flat`, the geometric one) at the centre of pixel (x, y).
     [[nodiscard]] double expected(unsigned x, unsigned y, unsigned width, unsigned height, bool flat = false) const {
         const auto c = PinholeCamera<double>::look_at({0, 2.5, -2.5}, {0, 0, 0.3}, {0, 1, 0}, 60, 32.0 / 24.0);
-        const Ray<double> ray = c.ray((x + 0.5) / width, (y + 0.5) / height);
+        const Ray<double> ray = *c.ray((x + 0.5) / width, (y + 0.5) / height);
         const Vec3<double> p = ray.at(-ray.origin.y / ray.direction.y);
         const Vec3<double> to_light = light - p;
         const double d2 = glm::dot(to_light, to_light);

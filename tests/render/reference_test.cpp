@@ -35,7 +35,7 @@ struct BigLight {
     }
     /// The floor point a pixel centre sees.
     [[nodiscard]] Vec3<double> floor_point(unsigned x, unsigned y, unsigned size) const {
-        const Ray<double> r = camera.ray((x + 0.5) / size, (y + 0.5) / size);
+        const Ray<double> r = *camera.ray((x + 0.5) / size, (y + 0.5) / size);
         return r.origin - r.direction * (r.origin.y / r.direction.y);
     }
 };
@@ -157,7 +157,7 @@ TEST_CASE("reference: caustics through glass keep weight 1 under MIS", "[referen
         unsigned n = 0;
         for (unsigned y = 0; y < size; ++y)
             for (unsigned x = 0; x < size; ++x) {
-                const Ray<double> r = camera.ray((x + 0.5) / size, (y + 0.5) / size);
+                const Ray<double> r = *camera.ray((x + 0.5) / size, (y + 0.5) / size);
                 const Vec3<double> p = r.origin - r.direction * (r.origin.y / r.direction.y);
                 if (p.x * p.x + p.z * p.z > 0.04 * 0.04) continue;
                 s.mean += film.at(x, y).x;

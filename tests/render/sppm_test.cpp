@@ -223,7 +223,7 @@ TEST_CASE("sppm renders the caustic of a point light through a glass ball, which
     // ball's shadow, with the floor area each covers (a quadrilateral, from its corners' rays).
     std::vector<double> area(std::size_t(GlassBall::width) * GlassBall::height, 0.0);
     auto floor_point = [&](double u, double v) -> std::optional<Vec3<double>> {
-        const auto hit = ball.scene.intersect(ball.camera.ray(u, v));
+        const auto hit = ball.scene.intersect(*ball.camera.ray(u, v));
         if (!hit || hit->object != 0 || !ball.in_shadow(hit->hit.point)) return std::nullopt;
         return hit->hit.point;
     };

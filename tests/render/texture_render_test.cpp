@@ -45,7 +45,7 @@ struct CheckerBox {
         std::vector<int> out(std::size_t(width) * height, -1);
         for (unsigned y = 0; y < height; ++y)
             for (unsigned x = 0; x < width; ++x) {
-                const auto hit = scene.intersect(camera.ray((x + 0.5) / width, (y + 0.5) / height));
+                const auto hit = scene.intersect(*camera.ray((x + 0.5) / width, (y + 0.5) / height));
                 if (!hit || hit->object != 0) continue;
                 const Vec3<double> p = hit->hit.point / square;
                 const double fx = p.x - std::floor(p.x), fz = p.z - std::floor(p.z), margin = 0.06 / square;

@@ -8,6 +8,7 @@
 // random stream, so the cache is the same for any thread count.
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <mutex>
 #include <vector>
@@ -23,7 +24,7 @@ inline constexpr unsigned cache_reference_width = 800;
 
 template <class SceneT>
 [[nodiscard]] IrradianceCache build_irradiance_cache(const SceneT& scene,
-                                                     const PinholeCamera<typename SceneT::scalar_type>& camera,
+                                                     const Camera<typename SceneT::scalar_type>& camera,
                                                      const PhotonMaps& maps, const RenderSettings& settings,
                                                      RenderStats& stats) {
     using S = typename SceneT::scalar_type;
@@ -36,8 +37,9 @@ template <class SceneT>
     // pixel spans much of the scene, and records valid over 1.5 to 24 of them smoothed indirect
     // light across corners (a 48 x 36 room read 18-23% dark near the floor's corners, 2-6% with a
     // gather at every pixel). Small images then gather more often, which they can afford.
-    const S pixel_angle = glm::length(camera.right()) /
-                          (glm::length(camera.direction()) * S(std::max(settings.width, cache_reference_width)));
+    const unsigned reference_width = std::max(settings.width, cache_reference_width);
+    const PixelSpread<S> pixel = camera.pixel_spread(
+        reference_width, unsigned(std::lround(double(reference_width) * settings.height / settings.width)));
     std::vector<IrradianceRecord> records;
     IrradianceCache cache(records, error);
     unsigned spacing = 1;
@@ -56,14 +58,15 @@ template <class SceneT>
                 if (px >= settings.width || py >= settings.height) continue;
                 ctx.rng = Pcg32(settings.seed ^ (0x70726574ULL + spacing), std::uint64_t(py) * settings.width + px);
                 ++ctx.rays.camera;
-                const Ray<S> ray = camera.ray((S(px) + S(0.5)) / S(settings.width), (S(py) + S(0.5)) / S(settings.height));
+                const auto ray = camera.ray((S(px) + S(0.5)) / S(settings.width), (S(py) + S(0.5)) / S(settings.height));
+                if (!ray) continue;
                 auto& mine = found[i];
-                integrator.for_each_diffuse_hit(ray, 1, S(0), [&](const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& geometric_n, S length) {
+                integrator.for_each_diffuse_hit(*ray, 1, S(0), [&](const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& geometric_n, S length) {
                     const Vec3<float> xf(x), nf(n);
                     if (cache.interpolate(xf, nf, ctx.nearest)) return;
                     if (!mine.empty() && IrradianceCache(mine, error).interpolate(xf, nf, ctx.nearest)) return;
                     const auto g = integrator.gather(x, n, settings.final_gather_rays, ctx, geometric_n);
-                    const S footprint = length * pixel_angle;
+                    const S footprint = pixel.size + length * pixel.angle;
                     const S r = std::clamp(g.harmonic_distance, S(1.5) * footprint / S(error),
                                            S(24) * footprint / S(error));
                     mine.push_back({xf, nf, Rgb<float>(g.irradiance), float(r)});

@@ -46,7 +46,7 @@ constexpr std::uint64_t reference_pixel_salt = 0x706978656c73ULL;
 /// stats.partial, stats.rays and stats.render_seconds, and `*error_film` (if given) with the
 /// per-pixel error estimate.
 template <class SceneT>
-[[nodiscard]] Film render_reference(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+[[nodiscard]] Film render_reference(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                     const RenderSettings& settings, RenderStats& stats, Film* error_film = nullptr) {
     using S = typename SceneT::scalar_type;
     const auto start = std::chrono::steady_clock::now();
@@ -125,7 +125,8 @@ template <class SceneT>
                         const S u = (S(x) + jitter.x) / S(width);
                         const S v = (S(y) + jitter.y) / S(height);
                         ++ctx.rays.camera;
-                        sum[(s % grid + s / grid + round) % 2] += Rgb<double>(path_tracer.radiance(camera.ray(u, v), ctx));
+                        if (const auto ray = camera.ray(u, v, lens_sample(camera, ctx.rng)))
+                            sum[(s % grid + s / grid + round) % 2] += Rgb<double>(path_tracer.radiance(*ray, ctx));
                     }
                     sums[0][pixel] += sum[0];
                     sums[1][pixel] += sum[1];

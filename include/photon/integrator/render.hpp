@@ -184,7 +184,7 @@ template <class SceneT>
 /// random stream p, so the film does not depend on the thread count. Lights with
 /// `lights_reaching[l] == false` get no shadow rays (EffectsPlan::light_emits; empty: all do).
 template <class SceneT>
-[[nodiscard]] Film render_image(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+[[nodiscard]] Film render_image(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                 const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats,
                                 const std::vector<bool>& lights_reaching = {}) {
     using S = typename SceneT::scalar_type;
@@ -214,7 +214,8 @@ template <class SceneT>
                     const S u = (S(x) + jitter.x) / S(settings.width);
                     const S v = (S(y) + jitter.y) / S(settings.height);
                     ++ctx.rays.camera;
-                    sum += Rgb<double>(integrator.radiance(camera.ray(u, v), 1, ctx));
+                    if (const auto ray = camera.ray(u, v, lens_sample(camera, ctx.rng)))
+                        sum += Rgb<double>(integrator.radiance(*ray, 1, ctx));
                 }
                 film.at(x, unsigned(y)) = Rgb<float>(sum / double(spp));
             }
@@ -234,7 +235,7 @@ template <class SceneT>
 
 /// Both passes: photon maps for the mode, then the image, with statistics.
 template <class SceneT>
-[[nodiscard]] RenderResult render(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+[[nodiscard]] RenderResult render(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                   const RenderSettings& settings) {
     validate(settings);
     const EffectsPlan plan = plan_effects(scene, camera, settings);

@@ -12,21 +12,21 @@
 /// PHOTON_RENDER_INSTANTIATIONS(EXTERN, S): the explicit instantiations for DefaultScene<S>:
 /// declarations with EXTERN = extern, definitions with EXTERN empty.
 #define PHOTON_RENDER_INSTANTIATIONS(EXTERN, S)                                                                      \
-    EXTERN template RenderResult render<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,            \
+    EXTERN template RenderResult render<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,            \
                                                          const RenderSettings&);                                     \
     EXTERN template PhotonMaps build_photon_maps<DefaultScene<S>>(const DefaultScene<S>&, const EffectsPlan&,      \
                                                                   const RenderSettings&, RenderStats&);              \
     EXTERN template PhotonMaps build_photon_maps<DefaultScene<S>>(const DefaultScene<S>&, const RenderSettings&,    \
                                                                   RenderStats&);                                     \
-    EXTERN template Film render_image<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,              \
+    EXTERN template Film render_image<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,              \
                                                        const PhotonMaps&, const RenderSettings&, RenderStats&,       \
                                                        const std::vector<bool>&);                                    \
     EXTERN template IrradianceCache build_irradiance_cache<DefaultScene<S>>(                                         \
-        const DefaultScene<S>&, const PinholeCamera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
-    EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,               \
+        const DefaultScene<S>&, const Camera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
+    EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,               \
                                                       const RenderSettings&, RenderStats&, const SppmPassCallback&,  \
                                                       Film*);                                                        \
-    EXTERN template Film render_reference<DefaultScene<S>>(const DefaultScene<S>&, const PinholeCamera<S>&,          \
+    EXTERN template Film render_reference<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,          \
                                                            const RenderSettings&, RenderStats&, Film*);
 
 #if defined(PHOTON_SEPARATE_COMPILATION) && PHOTON_SEPARATE_COMPILATION

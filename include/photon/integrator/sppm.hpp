@@ -261,7 +261,7 @@ struct SppmImage {
 /// stops after the current pass (stats.partial). Fills stats.sppm, stats.error, stats.stopped_by,
 /// stats.rays and the times, and `*error_film` (if given) with the per-pixel error estimate.
 template <class SceneT>
-[[nodiscard]] Film render_sppm(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+[[nodiscard]] Film render_sppm(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                const RenderSettings& settings, RenderStats& stats, const SppmPassCallback& on_pass = {},
                                Film* error_film = nullptr) {
     using S = typename SceneT::scalar_type;
@@ -273,7 +273,7 @@ template <class SceneT>
     const bool sky = scene.has_environment_light() && scene.environment_ball().radius > S(0);
     const detail::SppmEmission<S> plan(scene.lights(), settings.sppm_photons_per_pass,
                                        sky ? double(scene.environment()->power_into(scene.environment_ball())) : 0.0);
-    const double footprint = double(pixel_angle(camera, width, height)) * sppm_radius_in_pixels;
+    const PixelSpread<S> spread = camera.pixel_spread(width, height);
     auto seconds_since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
     stats.stopped_by = "passes done";
     unsigned pass = 0;
@@ -318,14 +318,17 @@ template <class SceneT>
                     const Vec2<double> jitter = progressive_pixel_sample(pass / 2, sx, sy);
                     ctx.rng = Pcg32(camera_seed, index);
                     ++ctx.rays.camera;
-                    const Ray<S> ray = camera.ray(S((double(x) + jitter.x) / width), S((double(y) + jitter.y) / height));
-                    const CameraPath<S> path = trace_camera_path(scene, ray, settings, ctx);
+                    const auto ray = camera.ray(S((double(x) + jitter.x) / width), S((double(y) + jitter.y) / height),
+                                                lens_sample(camera, ctx.rng));
+                    if (!ray) continue;  // outside the projection: black, as POV-Ray shows it
+                    const CameraPath<S> path = trace_camera_path(scene, *ray, settings, ctx);
                     px.direct += Rgb<double>(path.direct);
                     if (!path.point) continue;
                     const VisiblePoint<S>& vp = *path.point;
                     if (px.radius == 0)
                         px.radius = settings.sppm_initial_radius > 0 ? double(settings.sppm_initial_radius)
-                                                                     : footprint * double(vp.path_length);
+                                                                     : sppm_radius_in_pixels *
+                                                                           (double(spread.size) + double(spread.angle) * double(vp.path_length));
                     if (tree.empty() || !(px.radius > 0)) continue;
                     const float r = float(px.radius);
                     detail::SppmGather gather{tree, Vec3<float>(vp.position), Vec3<float>(vp.normal), r * r, 0.5f * r};

@@ -123,12 +123,4 @@ template <class SceneT>
     }
 }
 
-/// Width in radians of one pixel seen from the camera (the larger of its two sides, at the
-/// image centre): a path of length d covers about d times this on a surface facing it.
-template <Scalar S>
-[[nodiscard]] S pixel_angle(const PinholeCamera<S>& camera, unsigned width, unsigned height) noexcept {
-    const S focal = glm::length(camera.direction());
-    return std::max(glm::length(camera.right()) / S(width), glm::length(camera.up()) / S(height)) / focal;
-}
-
 }  // namespace photon

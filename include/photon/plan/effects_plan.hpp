@@ -418,14 +418,16 @@ template <class SceneT>
     return plan;
 }
 
-/// The plan for `scene` seen by `camera` under `settings`. With several lights, the global
+/// The plan for `scene` seen by `camera` under `settings`: the walls are proved from the camera's
+/// eye, so a camera whose rays start at many points (orthographic, cylinders 3 and 4, focal
+/// blur) gets none of those proofs. With several lights, the global
 /// photons are shared by the power each sends to what the camera sees, as a pilot pass measures
 /// it, with a floor (visible_power.hpp), unless `lights=on` asks for photon's old sharing by power.
 template <class SceneT>
-[[nodiscard]] EffectsPlan plan_effects(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+[[nodiscard]] EffectsPlan plan_effects(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                        const RenderSettings& settings) {
     using S = typename SceneT::scalar_type;
-    EffectsPlan plan = plan_effects(scene, std::optional(camera.location()), settings);
+    EffectsPlan plan = plan_effects(scene, camera.eye(), settings);
     // The caustic pilot: targets whose caustics land out of view are not aimed at. Only when the
     // global pass runs and hands over the caustics the caustic pass does not aim at, since it
     // then carries those targets' caustics.
@@ -437,7 +439,7 @@ template <class SceneT>
         pilot.seed = settings.seed;
         std::vector<TargetCausticsSeen> measured = visible_caustics(scene, camera, aimed, plan.light_emits(), pilot);
         const std::vector<std::uint32_t> unseen = unseen_caustic_targets(measured, pilot.min_share);
-        if (!unseen.empty()) plan = plan_effects(scene, std::optional(camera.location()), settings, unseen);
+        if (!unseen.empty()) plan = plan_effects(scene, camera.eye(), settings, unseen);
         plan.caustic_pilot = std::move(measured);
     }
     const auto lights = scene.lights();

@@ -42,7 +42,7 @@ struct TargetCausticsSeen {
 /// allows (empty: all). Deterministic for a seed; independent of the thread count.
 template <class SceneT>
 [[nodiscard]] std::vector<TargetCausticsSeen> visible_caustics(const SceneT& scene,
-                                                               const PinholeCamera<typename SceneT::scalar_type>& camera,
+                                                               const Camera<typename SceneT::scalar_type>& camera,
                                                                const std::vector<std::uint32_t>& targets,
                                                                const std::vector<bool>& emits,
                                                                const VisibleCausticsPilot& pilot = {}) {
@@ -67,7 +67,7 @@ template <class SceneT>
             measured.landed += power;
             const Vec3<S> at(p.position);
             // The direction slot points into the surface from the side the photon arrived on.
-            const bool camera_side = glm::dot(Vec3<S>(p.packed.incident_direction()), camera.location() - at) < S(0);
+            const bool camera_side = on_camera_side(camera, at, Vec3<S>(p.packed.incident_direction()));
             if (camera_side && camera_sees(scene, camera, at)) measured.seen += power;
         }
         result.push_back(measured);

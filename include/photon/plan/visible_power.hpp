@@ -15,6 +15,9 @@
 #include <span>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
 #include "../geometry/offset.hpp"
 #include "../light/light.hpp"
 #include "../material/scatter.hpp"
@@ -32,22 +35,52 @@ struct VisiblePowerPilot {
     std::uint64_t seed = 1;
 };
 
-/// Whether the camera sees point `p` directly: inside its frustum and nothing in between.
+/// Whether the camera may see point `p` directly: some primary ray reaches it unblocked. Exact
+/// for a perspective or orthographic camera without focal blur (inside the frustum or the
+/// prism, nothing in between); conservative for the others: any point in front of nothing
+/// that blocks it from the eye, or any point at all when the rays share no eye. The pilots
+/// may then keep work the image does not need, never drop light it shows.
 template <class SceneT>
-[[nodiscard]] bool camera_sees(const SceneT& scene, const PinholeCamera<typename SceneT::scalar_type>& camera,
+[[nodiscard]] bool camera_sees(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                const Vec3<typename SceneT::scalar_type>& p) {
     using S = typename SceneT::scalar_type;
-    const Vec3<S> d = p - camera.location();
-    // The camera's axes are orthogonal (PinholeCamera::look_at): coordinates by projection.
-    const S a = glm::dot(d, camera.direction()) / glm::dot(camera.direction(), camera.direction());
-    if (!(a > S(0))) return false;
-    const S b = glm::dot(d, camera.right()) / glm::dot(camera.right(), camera.right());
-    const S c = glm::dot(d, camera.up()) / glm::dot(camera.up(), camera.up());
-    if (std::abs(b) > S(0.5) * a || std::abs(c) > S(0.5) * a) return false;
-    const S error = intersection_error(p, camera.location());
+    const Projection projection = camera.projection();
+    const bool framed = !camera.has_focal_blur() &&
+                        (projection == Projection::perspective || projection == Projection::orthographic);
+    Vec3<S> from = camera.location();
+    if (framed) {
+        // p - location = a direction + b right + c up, for any (not only orthogonal) camera axes.
+        const glm::mat<3, 3, S> axes(camera.direction(), camera.right(), camera.up());
+        if (!(std::abs(glm::determinant(axes)) > S(0))) return true;  // degenerate: cannot tell
+        const Vec3<S> abc = glm::inverse(axes) * (p - camera.location());
+        const S a = abc.x, b = abc.y, c = abc.z;
+        if (!(a > S(0))) return false;
+        if (projection == Projection::perspective) {
+            if (std::abs(b) > S(0.5) * a || std::abs(c) > S(0.5) * a) return false;
+        } else {
+            if (std::abs(b) > S(0.5) || std::abs(c) > S(0.5)) return false;
+            from = camera.location() + b * camera.right() + c * camera.up();  // the ray's origin
+        }
+    } else {
+        const auto eye = camera.eye();
+        if (!eye) return true;
+        from = *eye;
+    }
+    const Vec3<S> d = p - from;
+    const S error = intersection_error(p, from);
     const S length = glm::length(d);
     if (!(length > S(4) * error)) return true;
-    return !scene.occluded(Ray<S>{camera.location(), d / length, length - S(4) * error});
+    return !scene.occluded(Ray<S>{from, d / length, length - S(4) * error});
+}
+
+/// Whether light arriving at `at` along `incident` (pointing into the surface) arrives on the
+/// side the camera may look at it from. Conservative where the rays share no eye.
+template <Scalar S>
+[[nodiscard]] bool on_camera_side(const Camera<S>& camera, const Vec3<S>& at, const Vec3<S>& incident) noexcept {
+    if (camera.projection() == Projection::orthographic && !camera.has_focal_blur())
+        return glm::dot(incident, camera.direction()) > S(0);
+    const auto eye = camera.eye();
+    return !eye || glm::dot(incident, *eye - at) < S(0);
 }
 
 /// Per light, the fraction of its emitted power that the pilot saw land on a diffuse point the
@@ -58,7 +91,7 @@ template <class SceneT>
 /// its own random stream.
 template <class SceneT>
 [[nodiscard]] std::vector<double> visible_power_fractions(const SceneT& scene,
-                                                          const PinholeCamera<typename SceneT::scalar_type>& camera,
+                                                          const Camera<typename SceneT::scalar_type>& camera,
                                                           const std::vector<bool>& emits, EmissionSampler sampler,
                                                           const VisiblePowerPilot& pilot = {}) {
     using S = typename SceneT::scalar_type;

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// From a SceneDescription to the library's objects: DefaultScene<S>, PinholeCamera<S> and
+// From a SceneDescription to the library's objects: DefaultScene<S>, Camera<S> and
 // RenderSettings, reading the mesh files the scene names (mesh_files.hpp). This is where
 // POV-Ray's meaning becomes physics: the light-unit rule (a light's colour and fade give its
 // radiant intensity), the finish-to-reflectance rule, the camera in POV-Ray's order of
 // application. Library constructors that reject a value (std::invalid_argument) are reported as
 // dsl::Error at the place the value was written.
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -38,7 +39,7 @@ struct BuildOptions {
 template <Scalar S>
 struct BuiltScene {
     DefaultScene<S> scene;
-    PinholeCamera<S> camera;
+    Camera<S> camera;
     RenderSettings settings;
     /// The file's `assumed_gamma`: the film holds numbers of that working space, and an image
     /// written from it is first converted to linear by decode_working_gamma (film/tone_map.hpp).
@@ -59,9 +60,16 @@ template <Scalar S>
     else
         warn(desc.at, "no camera: using POV-Ray's default camera at the origin looking along +z");
     const ResolvedCamera rc = resolve_camera(cam, double(settings.width) / double(settings.height), &warn);
-    std::optional<PinholeCamera<S>> camera;
+    // Focal blur's samples are the render's samples per pixel, unless the file or caller sets those.
+    if (rc.blur_samples && !desc.settings.render.count("samples_per_pixel") && !options.overrides.count("samples_per_pixel"))
+        settings.samples_per_pixel =
+            std::max(settings.samples_per_pixel, std::min<unsigned>(rc.blur_samples, SettingsLimits::max_samples));
+    std::optional<Camera<S>> camera;
     try {
-        camera.emplace(Vec3<S>(rc.location), Vec3<S>(rc.direction), Vec3<S>(rc.right), Vec3<S>(rc.up));
+        camera.emplace(camera_projection(rc.type),
+                       CameraFrame<S>{Vec3<S>(rc.location), Vec3<S>(rc.direction), Vec3<S>(rc.right), Vec3<S>(rc.up),
+                                      S(rc.angle), S(rc.vertical_angle)},
+                       FocalBlur<S>{S(rc.aperture), S(rc.focal_distance)});
     } catch (const std::invalid_argument& e) {
         throw Error(cam.at.known() ? cam.at : desc.at, e.what());
     }

@@ -405,10 +405,16 @@ struct Object {
 
 /// A camera as written; build.hpp resolves it in POV-Ray's order (see resolve_camera).
 struct CameraDescription {
+    /// POV-Ray's camera type keyword, "cylinder 1" to "cylinder 4" with the cylinder's number.
+    std::string type = "perspective";
     Vector3 location{0.0}, direction{0, 0, 1}, up{0, 1, 0}, sky{0, 1, 0};
     std::optional<Vector3> right;  ///< default <image width / image height, 0, 0>
     std::optional<Vector3> look_at;
-    std::optional<double> angle;  ///< horizontal field of view in degrees
+    std::optional<double> angle;           ///< horizontal field of view in degrees (0: orthographic's bare `angle`)
+    std::optional<double> vertical_angle;  ///< spherical's second angle
+    std::optional<double> aperture;        ///< focal blur, with blur_samples
+    std::optional<Vector3> focal_point;
+    std::optional<unsigned> blur_samples;
     Transform transform;
     std::map<std::string, SourceLocation> written;
     SourceLocation at;

@@ -3,7 +3,7 @@
 // photon's scene language: POV-Ray 3.7 scene files read into the library's objects, in three
 // stages (pbrt-v4 and Mitsuba style): lexer.hpp splits the text into located tokens; parser.hpp
 // evaluates it into a SceneDescription (description.hpp), which holds no library type; build.hpp
-// makes DefaultScene, PinholeCamera and RenderSettings from it. export_pov.hpp writes a
+// makes DefaultScene, Camera and RenderSettings from it. export_pov.hpp writes a
 // description back as a POV-Ray file. Bad input throws dsl::Error (diagnostics.hpp).
 //
 //   auto desc = photon::dsl::parse_file("cornell.pov");

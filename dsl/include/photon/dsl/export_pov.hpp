@@ -115,10 +115,17 @@ private:
     }
 
     void camera(const CameraDescription& c) {
-        out_ << "camera {\n  perspective\n  location " << vec(c.location) << "\n  direction " << vec(c.direction)
+        out_ << "camera {\n  " << c.type << "\n  location " << vec(c.location) << "\n  direction " << vec(c.direction)
              << "\n  up " << vec(c.up) << "\n  sky " << vec(c.sky) << '\n';
         if (c.right) out_ << "  right " << vec(*c.right) << '\n';
-        if (c.angle) out_ << "  angle " << num(*c.angle) << '\n';
+        if (c.angle) {
+            out_ << "  angle " << num(*c.angle);
+            if (c.vertical_angle) out_ << ", " << num(*c.vertical_angle);
+            out_ << '\n';
+        }
+        if (c.aperture) out_ << "  aperture " << num(*c.aperture) << '\n';
+        if (c.blur_samples) out_ << "  blur_samples " << *c.blur_samples << '\n';
+        if (c.focal_point) out_ << "  focal_point " << vec(*c.focal_point) << '\n';
         if (c.look_at) out_ << "  look_at " << vec(*c.look_at) << '\n';
         transform(c.transform, 1);
         out_ << "}\n\n";

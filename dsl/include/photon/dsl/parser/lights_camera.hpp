@@ -172,11 +172,14 @@ inline void Parser::parse_light_photons(const Token& kw, LightSource& light) {
     close_block(kw, "`reflection`, `refraction` or `area_light`", {"reflection", "refraction", "area_light"});
 }
 
+// camera { [CAMERA_ID] [TYPE] ITEM* }   TYPE: perspective | orthographic | fisheye | ultra_wide_angle
+//   | omnimax | panoramic | spherical | cylinder 1..4 | mesh_camera {..} | user_defined {..}
+// ITEM: location V | look_at V | up V | right V | direction V | sky V | angle F [, F] | aperture F
+//   | focal_point V | blur_samples F [, F] | confidence F | variance F | normal {..} | TRANSFORM
 inline CameraDescription Parser::parse_camera(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     CameraDescription cam;
-    std::string other_type;  ///< a camera type photon approximates, as warned
     take_identifier(cam, "a camera identifier or a camera item");
     cam.at = kw.location;
     for (;;) {
@@ -184,18 +187,24 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
         if (t.kind != TokenKind::identifier) break;
         if (try_transform(cam.transform)) continue;
         const std::string& w = t.text;
-        if (one_of(w, {"orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic", "spherical", "cylinder",
-                       "mesh_camera"})) {
+        if (one_of(w, {"perspective", "orthographic", "fisheye", "ultra_wide_angle", "omnimax", "panoramic",
+                       "spherical", "cylinder"})) {
             next();
-            if (w == "cylinder") parse_integer("the type of the cylinder camera (1 to 4)", 1, 4);
-            if (w == "mesh_camera") {
+            cam.written["type"] = t.location;
+            cam.type = w;
+            if (w == "cylinder")
+                cam.type += " " + std::to_string(parse_integer("the type of the cylinder camera (1 to 4)", 1, 4));
+            continue;
+        }
+        if (w == "mesh_camera" || w == "user_defined") {
+            next();
+            {
                 const Nest inner(*this, t.location);
                 skip_block(t);
             }
-            other_type = w;
             degrade(t.location, degraded::approximated_camera, w,
                     "the `" + w + "` camera is approximated by a perspective camera with the same location, "
-                    "direction, right and up: photon has only the perspective camera yet");
+                    "direction, right and up: photon does not have it");
             continue;
         }
         if (w == "normal") {  // POV-Ray's camera ray perturbation
@@ -208,7 +217,6 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
         if (!one_of(w, camera_keywords)) break;
         next();
         cam.written[w] = t.location;
-        if (w == "perspective") continue;
         if (w == "location")
             cam.location = parse_vector("the camera location");
         else if (w == "look_at")
@@ -222,26 +230,33 @@ inline CameraDescription Parser::parse_camera(const Token& kw) {
         else if (w == "sky")
             cam.sky = parse_vector("the vector after `sky`");
         else if (w == "angle") {
+            // An orthographic camera's angle may come without a number (POV-Ray's 0).
             SourceLocation at;
-            const double a = parse_float("the horizontal field of view in degrees after `angle`", &at);
-            if (accept_symbol(",")) parse_float("the vertical angle of the camera");
-            if (!other_type.empty() && !(a > 0 && a < 180)) {  // a fisheye's 360, say: a perspective camera cannot
-                degrade(at, degraded::approximated_camera, "angle",
-                        "the `" + other_type + "` camera's angle " + format_number(a) +
-                            " is ignored: a perspective camera sees less than 180 degrees");
-                continue;
-            }
-            if (!(a > 0 && a < 180))
-                fail(at, "camera `angle` must be between 0 and 180 degrees, found " + format_number(a));
+            const bool number = cam.type != "orthographic" || starts_expression(peek());
+            const double a = number ? parse_float("the horizontal field of view in degrees after `angle`", &at) : 0.0;
+            if (!(a >= 0)) fail(at, "camera `angle` must not be negative, found " + format_number(a));
+            if ((cam.type == "perspective" || cam.type == "orthographic") && !(a < 180))
+                fail(at, "camera `angle` must be below 180 degrees, found " + format_number(a));
             cam.angle = a;
+            if (accept_symbol(",")) {
+                SourceLocation v_at;
+                const double v = parse_float("the vertical angle of the camera", &v_at);
+                if (!(v >= 0)) fail(v_at, "camera vertical angle must not be negative, found " + format_number(v));
+                cam.vertical_angle = v;
+            }
         } else if (w == "focal_point") {
-            parse_vector("the focal point");
-            degrade(t.location, degraded::approximated_camera, w, "`focal_point` is ignored: photon's camera is a pinhole");
-        } else {
-            parse_float("`" + w + "`");
-            if (w == "aperture")
-                degrade(t.location, degraded::approximated_camera, w,
-                        "`aperture` is ignored: photon's camera is a pinhole (no depth of field)");
+            cam.focal_point = parse_vector("the focal point");
+        } else if (w == "aperture") {
+            cam.aperture = parse_float("`aperture`");
+        } else if (w == "blur_samples") {
+            // blur_samples N, or POV-Ray's adaptive MIN, MAX: photon always takes the most.
+            SourceLocation at;
+            double n = parse_float("the number of focal blur samples", &at);
+            if (accept_symbol(",")) n = parse_float("the most focal blur samples", &at);
+            if (!(n >= 1 && n <= 1e6)) fail(at, "`blur_samples` must be between 1 and 1000000, found " + format_number(n));
+            cam.blur_samples = unsigned(n);
+        } else if (w != "perspective") {
+            parse_float("`" + w + "`");  // confidence, variance: POV-Ray's early stop; photon takes every sample
         }
     }
     close_block(kw, "a camera item (location, look_at, up, right, direction, sky, angle, translate, rotate)",
