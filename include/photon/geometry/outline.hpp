@@ -57,6 +57,7 @@ public:
     /// not finite, a segment's degree is not 1 to 3, or a contour is not a closed chain.
     explicit Outline(const std::vector<std::vector<OutlineSegment>>& contours);
 
+    /// The box of the curves (not of their control points).
     [[nodiscard]] glm::dvec2 min() const noexcept { return min_; }
     [[nodiscard]] glm::dvec2 max() const noexcept { return max_; }
     [[nodiscard]] std::size_t contour_count() const noexcept { return contours_.size(); }
@@ -149,6 +150,7 @@ inline Outline::Outline(const std::vector<std::vector<OutlineSegment>>& contours
     if (!(min_.x <= max_.x)) throw std::invalid_argument("outline: it has no segments");
     const auto largest = [](glm::dvec2 v) { return std::max(std::abs(v.x), std::abs(v.y)); };
     const double gap = 1e-9 * std::max({largest(max_ - min_), largest(min_), largest(max_)});
+    glm::dvec2 tight_lo = max_, tight_hi = min_;
     for (const auto& contour : contours) {
         if (contour.empty()) continue;
         Contour c{segments_.size(), 0, pieces_.size(), 0, glm::dvec2(std::numeric_limits<double>::infinity()),
@@ -170,6 +172,16 @@ inline Outline::Outline(const std::vector<std::vector<OutlineSegment>>& contours
             s.lo = s.hi = p[0];
             for (int i = 1; i <= g.degree; ++i) s.lo = glm::min(s.lo, p[std::size_t(i)]), s.hi = glm::max(s.hi, p[std::size_t(i)]);
             c.lo = glm::min(c.lo, s.lo), c.hi = glm::max(c.hi, s.hi);
+            // The outline's box is the curves' own (their ends and turns), not their control points'.
+            for (const glm::dvec2 q : {s.start, s.end}) tight_lo = glm::min(tight_lo, q), tight_hi = glm::max(tight_hi, q);
+            for (int axis = 0; axis < 2; ++axis) {
+                const auto a = component(s, axis);
+                const auto turn = detail::outline_roots({a[1], 2.0 * a[2], 3.0 * a[3], 0.0}, std::max(1, g.degree - 1), 0.0, 1.0);
+                for (std::size_t i = 0; i < turn.count; ++i) {
+                    const double v = s.at(turn.value[i])[axis];
+                    tight_lo[axis] = std::min(tight_lo[axis], v), tight_hi[axis] = std::max(tight_hi[axis], v);
+                }
+            }
             // Cut at the turns of y(s), so that each piece crosses a horizontal line at most once.
             const auto y = component(s, 1);
             const auto turns = detail::outline_roots({y[1], 2.0 * y[2], 3.0 * y[3], 0.0}, std::max(1, g.degree - 1), 0.0, 1.0);
@@ -185,6 +197,7 @@ inline Outline::Outline(const std::vector<std::vector<OutlineSegment>>& contours
         c.segment_end = segments_.size(), c.piece_end = pieces_.size();
         contours_.push_back(c);
     }
+    min_ = tight_lo, max_ = tight_hi;
     // Sides: a contour's inside is solid where the other contours leave a point of it outside
     // (an even count of them around it); its inside is on its left when it runs counter-clockwise.
     for (std::size_t i = 0; i < contours_.size(); ++i) {
