@@ -180,4 +180,22 @@ TEST_CASE("text: a missing font is a located error, text in CSG engraves", "[dsl
     CHECK_THAT(exported, Contains("timrom.ttf\" \"a\\\"b\" 1, <0, 0, 0>"));
 }
 
+TEST_CASE("examples/scenes/prism_text.pov reads and builds with no warning", "[dsl][prism][text][scenes]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    po.include_paths = dsl::standard_include_paths();
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto built = dsl::build<float>(dsl::parse_file(std::string(PHOTON_SCENES_DIR) + "/prism_text.pov", po), bo);
+    CHECK(all_messages(warnings).empty());
+    int prisms = 0, csg = 0;
+    for (const auto& o : built.scene.objects()) {
+        prisms += std::holds_alternative<Transformed<Prism<float>>>(o.shape);
+        csg += std::holds_alternative<DefaultCsg<float>>(o.shape);
+    }
+    CHECK(prisms == 5);  // four prisms and the word
+    CHECK(csg == 1);     // the engraved slab
+}
+
 #endif
