@@ -9,6 +9,12 @@
 
 #include "dsl_test_util.hpp"
 
+#if defined(PHOTON_HAS_FREETYPE) && PHOTON_HAS_FREETYPE
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_OUTLINE_H
+#endif
+
 using namespace dsl_test;
 using namespace photon;
 using Catch::Matchers::Contains;
@@ -129,7 +135,8 @@ TEST_CASE("text: glyphs of a TrueType font, placed as POV-Ray places them", "[ds
     const std::string t = "text { ttf \"timrom.ttf\" \"AVTo W\" 1, 0 }";
     CHECK(prism_close(extent(t, "min_extent"), {-0.000012147, -0.016017454, -0.000063046}, 2e-4));
     CHECK(prism_close(extent(t, "max_extent"), {3.539017677, 0.696061730, 1.000013113}, 2e-4));
-    const std::string u = "text { ttf \"crystal.ttf\" \"Photon 3.7\" 0.25, <0.1, 0.05, 0> }";
+    // Commas between the items are optional, and `.ttf` is added to a name without an extension.
+    const std::string u = "text { ttf \"crystal\", \"Photon 3.7\", 0.25, <0.1, 0.05, 0> }";
     CHECK(prism_close(extent(u, "min_extent"), {-0.000020108, -0.000980926, -0.000104869}, 2e-4));
     CHECK(prism_close(extent(u, "max_extent"), {5.950297356, 1.152252316, 0.250021100}, 2e-4));
 
@@ -156,6 +163,45 @@ TEST_CASE("text: glyphs of a TrueType font, placed as POV-Ray places them", "[ds
     CHECK(front > 5);
     CHECK(front < rays);  // gaps between the stems
     CHECK(b.warnings.empty());
+}
+
+TEST_CASE("text: a glyph's hits are where FreeType's own rasterizer fills its pixels", "[dsl][text]") {
+    // FreeType renders "g" (curves, a closed bowl, a hole) unhinted at 200 pixels per em; every
+    // pixel it fills wholly must be hit at its centre by a ray along +z, every pixel it leaves
+    // empty missed. photon's glyph starts at x = -xMin (POV-Ray's first-glyph rule).
+    const char* font_path = "/usr/share/povray-3.7/include/timrom.ttf";
+    FT_Library library = nullptr;
+    FT_Face face = nullptr;
+    REQUIRE(FT_Init_FreeType(&library) == 0);
+    REQUIRE(FT_New_Face(library, font_path, 0, &face) == 0);
+    const int ppem = 200;
+    REQUIRE(FT_Set_Pixel_Sizes(face, 0, ppem) == 0);
+    const FT_UInt glyph = FT_Get_Char_Index(face, 'g');
+    REQUIRE(FT_Load_Glyph(face, glyph, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) == 0);
+    FT_BBox box;
+    FT_Outline_Get_CBox(&face->glyph->outline, &box);  // 26.6 pixels
+    REQUIRE(FT_Render_Glyph(face->glyph, FT_RENDER_MODE_NORMAL) == 0);
+    const FT_Bitmap& bitmap = face->glyph->bitmap;
+    const double x_min = double(box.xMin) / 64.0;  // pixels
+    dsl::ParseOptions o;
+    o.include_paths = {"/usr/share/povray-3.7/include"};
+    const StagedScene b = build_staged("text { ttf \"timrom.ttf\" \"g\" 1, 0 }\n", o);
+    int full = 0, empty = 0, wrong = 0;
+    for (unsigned row = 0; row < bitmap.rows; ++row)
+        for (unsigned col = 0; col < bitmap.width; ++col) {
+            const unsigned char coverage = bitmap.buffer[row * unsigned(bitmap.pitch) + col];
+            if (coverage != 0 && coverage != 255) continue;  // an edge pixel
+            const double px = double(face->glyph->bitmap_left) + double(col) + 0.5;
+            const double py = double(face->glyph->bitmap_top) - double(row) - 0.5;
+            const bool hit = shoot(b, {(px - x_min) / ppem, py / ppem, -5}, {0, 0, 1}).has_value();
+            (coverage == 255 ? full : empty) += 1;
+            wrong += hit != (coverage == 255);
+        }
+    FT_Done_Face(face);
+    FT_Done_FreeType(library);
+    CHECK(full > 3000);
+    CHECK(empty > 3000);
+    CHECK(wrong == 0);
 }
 
 TEST_CASE("text: a missing font is a located error, text in CSG engraves", "[dsl][text][errors]") {

@@ -148,8 +148,9 @@ inline void Parser::parse_prism(Object& obj) {
     if (!(shape.height1 < shape.height2)) skip_empty_shape(obj, "prism", "its two heights are equal", h1_at);
 }
 
-// TEXT: text { ttf STRING STRING FLOAT [,] VECTOR MODIFIERS }
-// The font file is looked for beside the scene, then on the include path; POV-Ray reads the
+// TEXT: text { ttf STRING [,] STRING [,] FLOAT [,] VECTOR MODIFIERS }
+// The font file is looked for beside the scene, then on the include path (with `.ttf` added when
+// the name has no extension, as POV-Ray adds it); POV-Ray reads the
 // offset as a vector (a float is that float in x, y and z, as for every vector).
 inline void Parser::parse_text(Object& obj) {
     TextShape t;
@@ -162,9 +163,15 @@ inline void Parser::parse_text(Object& obj) {
     if (options_.read_include) {
         t.font.path = name;  // scenes read from memory name no files photon could open
     } else {
-        std::vector<std::filesystem::path> candidates{name.is_absolute() ? name : files_.back().path.parent_path() / name};
-        if (!name.is_absolute())
-            for (const auto& dir : options_.include_paths) candidates.push_back(dir / name);
+        // POV-Ray adds the extension `.ttf` to a name without one (`ttf "cyrvetic"`).
+        std::vector<std::filesystem::path> names{name};
+        if (!name.has_extension()) names.push_back(std::filesystem::path(font.text + ".ttf"));
+        std::vector<std::filesystem::path> candidates;
+        for (const auto& n : names) {
+            candidates.push_back(n.is_absolute() ? n : files_.back().path.parent_path() / n);
+            if (!n.is_absolute())
+                for (const auto& dir : options_.include_paths) candidates.push_back(dir / n);
+        }
         std::error_code ec;
         const auto found = std::find_if(candidates.begin(), candidates.end(),
                                         [&](const std::filesystem::path& c) { return std::filesystem::is_regular_file(c, ec); });
@@ -172,7 +179,9 @@ inline void Parser::parse_text(Object& obj) {
             fail(font.location, "cannot find the font file \"" + font.text + "\" (looked beside the scene and on the include path)");
         t.font.path = *found;
     }
+    optional_comma();
     t.text = parse_string_token("the string of the text").text;
+    optional_comma();
     SourceLocation thickness_at;
     t.thickness = finite_value(parse_float("the thickness of the text", &thickness_at), "the thickness of the text", thickness_at);
     optional_comma();
