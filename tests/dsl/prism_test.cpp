@@ -207,7 +207,10 @@ TEST_CASE("text: a glyph's hits are where FreeType's own rasterizer fills its pi
 TEST_CASE("text: a missing font is a located error, text in CSG engraves", "[dsl][text][errors]") {
     CHECK_THAT(error_of("text { ttf \"no-such-font.ttf\" \"x\" 1, 0 }"),
                Contains("1:12: cannot find the font file \"no-such-font.ttf\""));
-    CHECK_THAT(error_of("text { \"timrom.ttf\" \"x\" 1, 0 }"), Contains("1:8: expected `ttf` and a font file name"));
+    CHECK_THAT(error_of("text { \"timrom.ttf\" \"x\" 1, 0 }"), Contains("1:8: expected `ttf` or `internal` and a font"));
+    const StagedScene internal = build_staged("text { internal 1 \"POV-Ray\" 1, 0 }\n");
+    CHECK(internal.scene.objects().empty());
+    CHECK(places(internal.warnings, "skipped object") == std::vector<std::string>{"3:8 text"});
     dsl::ParseOptions o;
     o.include_paths = {"/usr/share/povray-3.7/include"};
     // An "I" cut 0.1 deep into the front of a slab: a ray down its stem meets the engraving's floor.

@@ -149,13 +149,27 @@ inline void Parser::parse_prism(Object& obj) {
 }
 
 // TEXT: text { ttf STRING [,] STRING [,] FLOAT [,] VECTOR MODIFIERS }
+//     | text { internal FLOAT [,] STRING [,] FLOAT [,] VECTOR MODIFIERS }   (skipped, warning)
 // The font file is looked for beside the scene, then on the include path (with `.ttf` added when
 // the name has no extension, as POV-Ray adds it); POV-Ray reads the
 // offset as a vector (a float is that float in x, y and z, as for every vector).
 inline void Parser::parse_text(Object& obj) {
     TextShape t;
     const Token kind = next();
-    if (!kind.is_identifier("ttf")) fail_expected("`ttf` and a font file name", kind);
+    if (kind.is_identifier("internal")) {  // POV-Ray's fonts compiled into it: photon has none
+        parse_float("the number of POV-Ray's built-in font");
+        optional_comma();
+        (void)parse_string_token("the string of the text");
+        optional_comma();
+        parse_float("the thickness of the text");
+        optional_comma();
+        parse_vector("the offset between the glyphs of the text");
+        const std::string why = "photon has no copies of POV-Ray's built-in (`internal`) fonts; name the font file with `ttf`";
+        degrade(kind.location, degraded::skipped_object, "text", "`text` is skipped: " + why);
+        obj.shape = SkippedShape{"text", why};
+        return;
+    }
+    if (!kind.is_identifier("ttf")) fail_expected("`ttf` or `internal` and a font", kind);
     const Token font = parse_string_token("a font file name after `ttf`");
     t.font.written = font.text;
     t.font.at = font.location;
