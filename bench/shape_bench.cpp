@@ -9,6 +9,7 @@
 
 #include <photon/geometry/cylinder.hpp>
 #include <photon/geometry/polygon.hpp>
+#include <photon/geometry/prism.hpp>
 #include <photon/geometry/quadric.hpp>
 #include <photon/geometry/sphere.hpp>
 #include <photon/geometry/triangle.hpp>
@@ -86,6 +87,43 @@ template <class S> void polygon_star(benchmark::State& s) {  // one loop of 5 cr
     run(s, Polygon<S>({loop}));
 }
 
+std::vector<OutlineSegment> square_contour(glm::dvec2 centre, double half) {
+    const glm::dvec2 p[4] = {centre + glm::dvec2(-half, -half), centre + glm::dvec2(half, -half),
+                             centre + glm::dvec2(half, half), centre + glm::dvec2(-half, half)};
+    return {OutlineSegment::line(p[0], p[1]), OutlineSegment::line(p[1], p[2]), OutlineSegment::line(p[2], p[3]),
+            OutlineSegment::line(p[3], p[0])};
+}
+template <class S> void prism_square(benchmark::State& s) {  // a box as a linear prism
+    run(s, Prism<S>(Outline({square_contour(glm::dvec2(0.0), 1)}), -1, 1));
+}
+template <class S> void prism_curved(benchmark::State& s) {  // two cubic Beziers and a quadratic, and a square hole
+    const glm::dvec2 a(-1, -0.5), b(1, -0.5), c(0, 1);
+    run(s, Prism<S>(Outline({{OutlineSegment::cubic(a, {-0.5, -1.5}, {0.5, -1.5}, b), OutlineSegment::cubic(b, {1.4, 0.3}, {0.6, 1.1}, c),
+                              OutlineSegment::quadratic(c, {-1.3, 0.9}, a)},
+                             square_contour(glm::dvec2(0.0), 0.2)}),
+                    -1, 1));
+}
+template <class S> void prism_conic(benchmark::State& s) {  // a square frustum
+    run(s, Prism<S>(Outline({square_contour(glm::dvec2(0.0), 1)}), S(0.2), 1, PrismSweep::conic));
+}
+template <class S> void prism_text_row(benchmark::State& s) {  // 24 "glyphs" of 2 quadratic contours each, in a row
+    std::vector<std::vector<OutlineSegment>> contours;
+    for (int k = 0; k < 24; ++k) {
+        const glm::dvec2 c(-1.0 + (k + 0.5) / 12.0, 0.0);
+        std::vector<OutlineSegment> ring;
+        for (int q = 0; q < 8; ++q) {  // an "o": 8 quadratic arcs
+            const double a0 = q * pi<double> / 4, a1 = (q + 1) * pi<double> / 4, am = 0.5 * (a0 + a1);
+            const double r = 0.035;
+            ring.push_back(OutlineSegment::quadratic(c + r * glm::dvec2(std::cos(a0), 1.6 * std::sin(a0)),
+                                                     c + r / std::cos(pi<double> / 8) * glm::dvec2(std::cos(am), 1.6 * std::sin(am)),
+                                                     c + r * glm::dvec2(std::cos(a1), 1.6 * std::sin(a1))));
+        }
+        contours.push_back(ring);
+        contours.push_back(square_contour(c, 0.012));
+    }
+    run(s, Prism<S>(Outline(contours), S(-0.1), S(0.1)));
+}
+
 }  // namespace
 
 #define PHOTON_SHAPE_BENCH(f) BENCHMARK_TEMPLATE(f, float); BENCHMARK_TEMPLATE(f, double)
@@ -99,5 +137,9 @@ PHOTON_SHAPE_BENCH(csg_quadric_cylinder);
 PHOTON_SHAPE_BENCH(triangle);
 PHOTON_SHAPE_BENCH(polygon_square);
 PHOTON_SHAPE_BENCH(polygon_star);
+PHOTON_SHAPE_BENCH(prism_square);
+PHOTON_SHAPE_BENCH(prism_curved);
+PHOTON_SHAPE_BENCH(prism_conic);
+PHOTON_SHAPE_BENCH(prism_text_row);
 
 BENCHMARK_MAIN();

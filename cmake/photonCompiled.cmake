@@ -23,5 +23,8 @@ function(photon_add_compiled_dsl name render_name)
   if(TARGET photon::obj)  # build() reads mesh { obj "file" }: its users must agree on PHOTON_HAS_OBJ
     target_link_libraries(${name} PUBLIC photon::obj)
   endif()
+  if(TARGET photon::fonts)  # build() reads text { ttf "file" }: its users must agree on PHOTON_HAS_FREETYPE
+    target_link_libraries(${name} PUBLIC photon::fonts)
+  endif()
   target_compile_definitions(${name} PUBLIC PHOTON_DSL_SEPARATE_COMPILATION=1)
 endfunction()

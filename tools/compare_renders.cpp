@@ -217,6 +217,7 @@ int main(int argc, char** argv) {
 
         dsl::ParseOptions po;
         po.image_width = a.width(), po.image_height = a.height();
+        po.include_paths = dsl::standard_include_paths();  // as `photon render`: POV-Ray's includes and fonts
         po.diagnostics = [](const dsl::Diagnostic&) {};  // the renders already reported them
         const auto built = dsl::load_scene<float>(scene_file, po);
         const std::vector<int> label = label_pixels(built, regions, a.width(), a.height());

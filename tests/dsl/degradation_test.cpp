@@ -95,7 +95,7 @@ TEST_CASE("a declared skipped object warns again where it is used", "[dsl][degra
 }
 
 TEST_CASE("a scene whose every object was skipped says that nothing renders", "[dsl][degradation]") {
-    const Built b = build_text(std::string(lit) + "superellipsoid { <1, 1> }\ntext { ttf \"a.ttf\" \"photon\" 1, 0 }\n");
+    const Built b = build_text(std::string(lit) + "superellipsoid { <1, 1> }\nlemon { <0, 0, 0>, <0, 1, 0>, 1, 2, 3 }\n");
     CHECK(b.objects == 0);
     CHECK(places(b.warnings, "nothing renders") == std::vector<std::string>{"1:1 "});
     CHECK_THAT(all_messages(b.warnings),

@@ -8,6 +8,7 @@
 
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -326,6 +327,38 @@ struct PolygonShape {
     if (!loops.empty() && loops.back().empty()) loops.pop_back();
     return loops;
 }
+/// One curve of a prism's outline: a Bezier curve of degree 1 (a line), 2 or 3 by its control
+/// points (the first degree + 1 of `control`), in the outline's plane.
+struct OutlineCurve {
+    std::array<glm::dvec2, 4> control{};
+    int degree = 1;
+};
+/// `prism { ... }` after POV-Ray's reading of its points (parser/prism.hpp): closed contours of
+/// curves in the xz plane (a curve's (u, v) is x, z), filled by the even-odd rule, swept along y
+/// from height1 to height2 (height1 < height2). Conic: the outline is scaled by the height.
+struct PrismShape {
+    enum class Sweep : std::uint8_t { linear, conic };
+    std::shared_ptr<const std::vector<std::vector<OutlineCurve>>> contours;
+    double height1 = 0, height2 = 1;
+    Sweep sweep = Sweep::linear;
+    bool open = false;
+};
+/// A TrueType font named in a text object, found by the parser (beside the scene, then on the
+/// include path) and read by the build step (font_files.hpp), as mesh files are.
+struct FontFile {
+    std::filesystem::path path;  ///< where the parser found it
+    std::string written;         ///< the name as the scene writes it
+    SourceLocation at;           ///< where the name is written
+};
+/// `text { ttf "font.ttf" "string" thickness, offset }`: the string's glyphs, each a prism of its
+/// outline (em units, baseline at y = 0, the first glyph's left edge at x = 0) from z = 0 to
+/// z = thickness, placed by POV-Ray's advance, kerning and `offset` per glyph.
+struct TextShape {
+    FontFile font;
+    std::string text;  ///< UTF-8
+    double thickness = 1;
+    Vector3 offset{0.0};
+};
 /// An OBJ file named in a mesh (`mesh { obj "file.obj" }`). The parser only records it; the build
 /// step reads it (mesh_files.hpp), so that reading a scene never opens a mesh file.
 struct MeshFile {
@@ -361,7 +394,7 @@ struct SkippedShape {
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
                            SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape, QuadricShape,
-                           PolygonShape>;
+                           PolygonShape, PrismShape, TextShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -396,7 +429,7 @@ struct Object {
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
                                      "light_source", "",    "",      "cylinder", "cone", "disc", "torus",
-                                     "quadric",      "polygon"};
+                                     "quadric",      "polygon", "prism", "text"};
     static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);

@@ -48,6 +48,32 @@ public:
 private:
     static std::string num(double v) { return format_number(v); }
     static std::string vec(const Vector3& v) { return "<" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + ">"; }
+    /// A POV-Ray string literal of `s`.
+    static std::string quoted(const std::string& s) {
+        std::string out = "\"";
+        for (const char c : s) {
+            if (c == '"' || c == '\\') out += '\\';
+            out += c;
+        }
+        return out + '"';
+    }
+    /// A prism as a bezier_spline one (every curve raised to a cubic: exact for lines and
+    /// quadratics), so POV-Ray reads back the outline photon read, whatever its spline type.
+    void write_prism(const PrismShape& p) {
+        std::vector<glm::dvec2> points;
+        for (const auto& contour : *p.contours)
+            for (const OutlineCurve& c : contour) {
+                const auto& q = c.control;
+                if (c.degree == 1) points.insert(points.end(), {q[0], q[0] + (q[1] - q[0]) / 3.0, q[1] + (q[0] - q[1]) / 3.0, q[1]});
+                else if (c.degree == 2)
+                    points.insert(points.end(), {q[0], q[0] + 2.0 / 3.0 * (q[1] - q[0]), q[2] + 2.0 / 3.0 * (q[1] - q[2]), q[2]});
+                else points.insert(points.end(), {q[0], q[1], q[2], q[3]});
+            }
+        out_ << "prism { bezier_spline " << (p.sweep == PrismShape::Sweep::conic ? "conic_sweep " : "linear_sweep ")
+             << num(p.height1) << ", " << num(p.height2) << ", " << points.size();
+        for (const glm::dvec2& q : points) out_ << ", <" << num(q.x) << ", " << num(q.y) << ">";
+        out_ << (p.open ? " open" : "") << '\n';
+    }
     static std::string on_off(bool b) { return b ? "on" : "off"; }
     void indent(int level) {
         for (int i = 0; i < level; ++i) out_ << "  ";
@@ -384,6 +410,11 @@ private:
             out_ << "polygon { " << g->points->size();
             for (const Vector3& point : *g->points) out_ << ", " << vec(point);
             out_ << '\n';
+        } else if (const auto* pr = std::get_if<PrismShape>(&o.shape)) {
+            write_prism(*pr);
+        } else if (const auto* x = std::get_if<TextShape>(&o.shape)) {
+            out_ << "text { ttf " << quoted(x->font.path.string()) << ' ' << quoted(x->text) << ' ' << num(x->thickness) << ", "
+                 << vec(x->offset) << '\n';
         } else if (const auto* t = std::get_if<TriangleShape>(&o.shape)) {
             out_ << "triangle { " << vec(t->vertices[0]) << ", " << vec(t->vertices[1]) << ", " << vec(t->vertices[2])
                  << '\n';

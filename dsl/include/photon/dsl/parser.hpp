@@ -63,6 +63,7 @@ namespace photon::dsl {
 #include "parser/mesh2.hpp"
 #include "parser/quadrics.hpp"
 #include "parser/quadric_polygon.hpp"
+#include "parser/prism.hpp"
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/sky.hpp"

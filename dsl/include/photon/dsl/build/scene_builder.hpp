@@ -21,6 +21,7 @@
 #include <photon/photon.hpp>
 
 #include "../description.hpp"
+#include "../font_files.hpp"
 #include "../mesh_files.hpp"
 #include "layers.hpp"
 #include "lights.hpp"
@@ -88,6 +89,7 @@ public:
     void read_files() {
         std::function<void(const Object&)> visit = [&](const Object& o) {
             if (const auto* m = std::get_if<MeshShape>(&o.shape); m && m->file) (void)mesh_files_.triangles(*m->file);
+            if (const auto* t = std::get_if<TextShape>(&o.shape)) (void)font_files_.set(*t);
             if (const auto* u = std::get_if<UnionShape>(&o.shape))
                 for (const auto& child : u->children) visit(*child);
             if (const auto* c = std::get_if<CsgShape>(&o.shape))
@@ -290,6 +292,16 @@ private:
         place(r, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
     }
+    std::optional<DefaultCsg<S>> csg_leaf(const PrismShape& g, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(g, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
+    std::optional<DefaultCsg<S>> csg_leaf(const TextShape& text, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(text, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
     std::optional<DefaultCsg<S>> csg_leaf(const QuadricShape& q, const Transform& t) {
         std::optional<DefaultCsg<S>> leaf;
         place(q, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
@@ -301,7 +313,7 @@ private:
     template <class Shape> static constexpr bool is_solid_shape(const Shape&) {
         return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape> ||
                std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape> ||
-               std::is_same_v<Shape, QuadricShape>;
+               std::is_same_v<Shape, QuadricShape> || std::is_same_v<Shape, PrismShape> || std::is_same_v<Shape, TextShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -348,6 +360,30 @@ private:
     template <class F> void place(const TorusShape& tor, const Transform& t, F&& f) {
         if (tor.major == 0) return place(SphereShape{Vector3(0.0), tor.minor}, t, f);
         f(Transformed<Torus<S>>(Torus<S>(S(tor.major), S(tor.minor)), to_affine<S>(t)));
+    }
+    /// The prism placed: always Transformed (Prism lies along the y axis, and text is a prism
+    /// turned to lie along z). Its outline's curves as the library's segments.
+    template <class F> void place(const PrismShape& g, const Transform& t, F&& f) {
+        std::vector<std::vector<OutlineSegment>> contours;
+        for (const auto& contour : *g.contours) {
+            contours.emplace_back();
+            for (const OutlineCurve& c : contour) contours.back().push_back({c.control, c.degree});
+        }
+        const auto sweep = g.sweep == PrismShape::Sweep::conic ? PrismSweep::conic : PrismSweep::linear;
+        f(Transformed<Prism<S>>(Prism<S>(Outline(contours), S(g.height1), S(g.height2), sweep, g.open), to_affine<S>(t)));
+    }
+    /// Text placed: its glyphs' outlines (font_files.hpp) as one prism, turned to run from z = 0
+    /// to z = thickness (y and z swapped: the outline's v is y). One prism for all glyphs fills
+    /// by the even-odd rule across them, POV-Ray's union of glyphs only where glyphs do not
+    /// overlap. A text with no outline (spaces) places nothing.
+    template <class F> void place(const TextShape& text, const Transform& t, F&& f) {
+        auto contours = std::make_shared<const GlyphContours>(font_files_.set(text));
+        if (contours->empty()) return;
+        Transform turn;
+        turn.linear = glm::dmat3(1, 0, 0, 0, 0, 1, 0, 1, 0);
+        place(PrismShape{contours, std::min(0.0, text.thickness), std::max(0.0, text.thickness), PrismShape::Sweep::linear,
+                         false},
+              turn.then(t), f);
     }
     /// The quadric placed: its transformation folded into its numbers (in double, also for float);
     /// with no quadratic term, the plane (half-space) it is. Handed to `f`.
@@ -422,6 +458,12 @@ private:
     }
     void add_shape(const TorusShape& tor, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(tor, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    void add_shape(const PrismShape& g, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(g, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    void add_shape(const TextShape& text, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(text, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const QuadricShape& q, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(q, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
@@ -526,6 +568,7 @@ private:
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
     MeshFiles mesh_files_;
+    FontFiles font_files_;
     std::size_t skipped_ = 0;  ///< objects photon has no shape for
 };
 

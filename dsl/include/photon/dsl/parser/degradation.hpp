@@ -30,7 +30,6 @@ inline void Parser::degrade(const SourceLocation& at, std::string_view kind, std
 
 /// What photon lacks, for "`x` is skipped: photon has no ... yet".
 inline std::string missing_shape(const std::string& keyword) {
-    if (keyword == "text") return "text object";
     return keyword;
 }
 

@@ -4,6 +4,8 @@
 // min_extent() and max_extent() (the parser holds no geometry; ParseOptions::geometry answers),
 // and inside(), which the description answers for the solids photon has.
 
+#include <photon/geometry/outline.hpp>
+
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -98,6 +100,19 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                 return s.squares.x * p.x * p.x + s.squares.y * p.y * p.y + s.squares.z * p.z * p.z + m.x * p.x * p.y +
                            m.y * p.x * p.z + m.z * p.y * p.z + glm::dot(s.linear, p) + s.constant <=
                        0;
+            } else if constexpr (std::is_same_v<S, PrismShape>) {  // POV-Ray's Inside: the closed solid, also when open
+                if (!(p.y >= s.height1 && p.y <= s.height2)) return false;
+                glm::dvec2 q(p.x, p.z);
+                if (s.sweep == PrismShape::Sweep::conic) {
+                    if (std::abs(p.y) <= tolerance) return false;
+                    q /= p.y;
+                }
+                std::vector<std::vector<OutlineSegment>> contours;
+                for (const auto& contour : *s.contours) {
+                    contours.emplace_back();
+                    for (const OutlineCurve& c : contour) contours.back().push_back({c.control, c.degree});
+                }
+                return Outline(contours).contains(q);
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

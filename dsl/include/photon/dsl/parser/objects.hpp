@@ -64,6 +64,10 @@ inline Object Parser::parse_object(const Token& kw) {
         parse_quadric(obj);
     } else if (w == "polygon") {
         parse_polygon(obj);
+    } else if (w == "prism") {
+        parse_prism(obj);
+    } else if (w == "text") {
+        parse_text(obj);
     } else if (w == "triangle" || w == "smooth_triangle") {
         obj.shape = parse_triangle_corners(kw);
     } else if (w == "mesh") {

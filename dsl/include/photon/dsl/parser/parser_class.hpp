@@ -319,6 +319,9 @@ private:
     // quadric_polygon.hpp
     void parse_quadric(Object& obj);
     void parse_polygon(Object& obj);
+    // prism.hpp
+    void parse_prism(Object& obj);
+    void parse_text(Object& obj);
 
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
