@@ -180,6 +180,21 @@ TEMPLATE_TEST_CASE("area light shadow rays: a grid's exact sum, a jittered recta
         CHECK(area_direct(grid_scene, Vec3<S>(S(x), 0, S(0.1)), 9, 1) == Approx(want).epsilon(1e-4));
         CHECK(area_direct(grid_scene, Vec3<S>(S(x), 0, S(0.1)), 16, 1) == Approx(want).epsilon(1e-4));
     }
+    // POV-Ray's light without a fade (constant falloff) with `area_illumination`: each emitter
+    // lights by (I / 9) cos, whatever its distance.
+    AreaLight<S> constant = grid;
+    constant.falloff = Falloff<S>::constant(S(1));
+    const auto constant_scene = area_floor_scene(constant, false);
+    for (const double x : {0.0, 0.3, 1.5}) {
+        double want = 0;
+        for (int k = 0; k < 9; ++k) {
+            const Vec3<double> e = Vec3<double>(0, 0.5, 0) + pov_grid_offset(k % 3, k / 3, 3, 3, {1, 0, 0}, {0, 0, 0.6}, false);
+            const Vec3<double> to = e - Vec3<double>(x, 0, 0.1);
+            want += I / 9 * to.y / glm::length(to);
+        }
+        INFO("constant falloff, x = " << x);
+        CHECK(area_direct(constant_scene, Vec3<S>(S(x), 0, S(0.1)), 9, 1) == Approx(want).epsilon(1e-4));
+    }
     // Jittered 2 x 5 with axes 1 and 0.6: the continuous rectangle 2 x 0.75 (half a cell wider per
     // side), I / A times its solid angle below its centre; 4000 calls of 10 stratified rays each
     // (0.3% standard deviation, measured).
@@ -251,7 +266,11 @@ TEMPLATE_TEST_CASE("area light photons: first-hit irradiance equals the shadow r
          {AreaLight<S>{.center = {0, 0.5, 0}, .axis1 = {1, 0, 0}, .axis2 = {0, 0, 0.8}, .size1 = 3, .size2 = 2, .power = power},
           AreaLight<S>{.center = {0, 0.5, 0}, .axis1 = {1, 0, 0}, .axis2 = {0, 0, 0.8}, .size1 = 3, .size2 = 2, .jitter = true, .power = power},
           AreaLight<S>{.center = {0, 0.5, 0}, .axis1 = {1, 0, 0}, .axis2 = {0, 0, 1}, .size1 = 5, .size2 = 5, .jitter = true,
-                       .circular = true, .power = power}}) {
+                       .circular = true, .power = power},
+          // POV-Ray's default light, which does not fall off: each emitter's photons rescaled
+          // by their own distance at the first hit.
+          AreaLight<S>{.center = {0, 0.5, 0}, .axis1 = {1, 0, 0}, .axis2 = {0, 0, 0.8}, .size1 = 3, .size2 = 2, .jitter = true,
+                       .power = power, .falloff = Falloff<S>::constant(S(1))}}) {
         const auto scene = area_floor_scene(light, false);
         const PhotonTracingSettings settings{.photons = 600'000, .store = {.direct = true, .caustic = false, .indirect = false}, .seed = 9};
         const PhotonMap map(trace_global_photons(scene, settings).photons);
@@ -263,7 +282,7 @@ TEMPLATE_TEST_CASE("area light photons: first-hit irradiance equals the shadow r
             const Vec3<S> p(S(x), S(0), S(0.1));
             const double shadow_rays = area_direct(scene, p, 400, 500);  // 3000 rays or more: 1% noise
             const Rgb<double> e = estimate_irradiance(map, Vec3<double>(p), Vec3<double>{0, 1, 0}, estimate, scratch);
-            INFO("jitter " << light.jitter << " circular " << light.circular << " at x = " << x << ": photons " << e.x
+            INFO("jitter " << light.jitter << " circular " << light.circular << " falloff " << int(light.falloff.kind) << " at x = " << x << ": photons " << e.x
                            << ", shadow rays " << shadow_rays);
             CHECK(e.x == Approx(shadow_rays).epsilon(0.08));
         }

@@ -10,8 +10,9 @@
 // photon draws that continuous emitter. `circular` maps the square of grid coordinates onto a
 // disc (POV-Ray's shells: each coordinate pair is scaled by its max-norm over its length after
 // POV-Ray's +0.001 offset). The emitters are points: no ray meets them, and each lights a point
-// by I cos(theta) / d^2 of its own distance, as POV-Ray's `area_illumination` computes (without
-// it POV-Ray takes the cosine and distance of the centre for every emitter).
+// by I cos(theta) g(d) of its own direction and distance d (g the falloff, 1/d^2 when physical),
+// as POV-Ray's `area_illumination` computes (without it POV-Ray takes the cosine and distance of
+// the centre for every emitter).
 // POV-Ray's `orient` (the grid turned to face each lit point) is no emitter photons can leave:
 // a photon's receiver is not known when it leaves. Its picture, a disc facing every point it
 // lights, is a Lambertian sphere's silhouette: SphereLight.

@@ -3,9 +3,10 @@
 // Lights as the two passes see them: photon emission (pass 1) and incident light at a shading
 // point for shadow rays (pass 2). Point and spherical lights share both: a point light is the
 // limit of a sphere light of radius 0. An area light (area_light.hpp) is a grid or a continuum of
-// point emitters: photons leave from one of them, shadow rays aim at one of them. A light's falloff (falloff.hpp) and its cone's profile
-// (cone.hpp) scale both alike: direct light by g(d) and the profile, photons by the profile at
-// emission and by g(d) d^2 at their first hit (first_hit_scale).
+// point emitters: photons leave from one of them, shadow rays aim at one of them. A light's
+// falloff (falloff.hpp) and its cone's profile (cone.hpp) scale both alike: direct light by g(d)
+// and the profile, photons by the profile at emission and by g(d) d^2 at their first hit
+// (first_hit_scale), d from the centre, or from its emitter for an area light.
 
 #include <cmath>
 #include <algorithm>
@@ -91,11 +92,15 @@ template <Scalar S> [[nodiscard]] S emission_weight(const Light<S>& light, const
 }
 /// Factor on the power of a photon from `light` at its first surface hit `p`: g(d) d^2 for the
 /// distance d from the light's centre (falloff.hpp), so that the first-hit irradiance follows
-/// the light's falloff; exactly 1 for the physical light. Later bounces are physical.
-template <Scalar S> [[nodiscard]] S first_hit_scale(const Light<S>& light, const Vec3<S>& p) noexcept {
+/// the light's falloff; exactly 1 for the physical light. Later bounces are physical. An area
+/// light's emitters fall off each from itself (POV-Ray's `area_illumination`): d is from the
+/// photon's emission point `origin`.
+template <Scalar S>
+[[nodiscard]] S first_hit_scale(const Light<S>& light, const Vec3<S>& p, const Vec3<S>& origin) noexcept {
     const Falloff<S>& falloff = light_falloff(light);
     if (falloff.is_physical()) return S(1);
-    return falloff.relative_to_inverse_square(glm::length(p - light_center(light)));
+    const Vec3<S> from = std::holds_alternative<AreaLight<S>>(light) ? origin : light_center(light);
+    return falloff.relative_to_inverse_square(glm::length(p - from));
 }
 
 /// Unit emission direction, uniform over the light's emitting directions.
@@ -140,8 +145,8 @@ template <Scalar S> struct IncidentLight {
 /// is computed once, so n x n shadow samples cost one square root each. Sphere lights are sampled
 /// uniformly in the solid angle they subtend, so the estimate is exact for an unoccluded light
 /// (with its falloff evaluated at the centre's distance, as POV-Ray does for its area lights).
-/// An area light's samples are its emitters, each lighting x by its intensity over its own d^2
-/// (its falloff too taken at the centre's distance).
+/// An area light's samples are its emitters, each lighting x by its intensity times its falloff
+/// at its own distance (POV-Ray's `area_illumination`).
 template <Scalar S> class IncidentSampler {
 public:
     IncidentSampler(const Light<S>& light, const Vec3<S>& x) noexcept : cone_(light_cone(light)) {
@@ -149,8 +154,8 @@ public:
         const S d2 = glm::dot(to_center_, to_center_);
         if ((area_ = std::get_if<AreaLight<S>>(&light))) {
             visible_ = true;  // but nothing from an emitter at x itself
-            relative_ = light_falloff(light).relative_to_inverse_square(std::sqrt(d2));
-            value_ = radiant_intensity(light) * relative_;
+            falloff_ = &light_falloff(light);
+            value_ = radiant_intensity(light);
             return;
         }
         radius_ = light_radius(light);
@@ -221,7 +226,8 @@ public:
             const Vec3<S> dir = to / d;
             const S profile = cone_ ? cone_->profile(-dir) : S(1);
             if (!(profile > S(0))) return std::nullopt;
-            return IncidentLight<S>{dir, d, value_ * (profile / d2)};
+            const S g = falloff_->is_physical() ? S(1) / d2 : falloff_->irradiance_per_intensity(d);
+            return IncidentLight<S>{dir, d, value_ * (profile * g)};
         }
         if (radius_ == S(0)) {
             const S profile = cone_ ? cone_->profile(-axis_) : S(1);
@@ -240,6 +246,7 @@ public:
 private:
     const std::optional<Cone<S>>& cone_;
     const AreaLight<S>* area_ = nullptr;
+    const Falloff<S>* falloff_ = nullptr;  ///< an area light's, applied per emitter
     Vec3<S> to_center_{}, axis_{};
     S radius_ = S(0), distance_ = S(0), one_minus_cos_ = S(0), solid_angle_ = S(0), relative_ = S(1);
     Frame<S> frame_{};
