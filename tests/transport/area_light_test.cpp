@@ -350,3 +350,19 @@ TEMPLATE_TEST_CASE("area light hard cases: a point on an emitter, a light in the
     CHECK_FALSE(light_has_surface(light));
     CHECK_FALSE(intersect_light(light, Ray<S>{{0, 1, 0}, {0, -1, 0}}));
 }
+
+TEST_CASE("a sphere light with one shadow ray per point still samples the whole sphere", "[light][shadow]") {
+    // Half the sphere hidden behind a slab's edge: one random shadow ray per call, averaged, must
+    // match many rays per call (a fixed sample would see all or nothing of it).
+    DefaultScene<double> scene;
+    const auto white = scene.add_material(Material<double>::lambertian(Rgb<double>(0.5)));
+    scene.add(Plane<double>({0, 1, 0}, 0), white);
+    scene.add(Box<double>({-20, 1, -20}, {0, 1.01, 20}), white);
+    scene.add_light(SphereLight<double>{.center = {0, 2, 0}, .radius = 0.3, .power = Rgb<double>(10)});
+    scene.commit();
+    const Vec3<double> p{0, 0, 0};
+    const double one = area_direct(scene, p, 1, 20'000), many = area_direct(scene, p, 64, 400);
+    INFO("1 ray: " << one << ", 64 rays: " << many);
+    CHECK(many > 0.0);
+    CHECK(one == Approx(many).epsilon(0.03));
+}

@@ -72,7 +72,7 @@ template <class SceneT, Scalar S>
         }
         Rgb<S> sum(S(0));
         for (unsigned i = 0; i < count; ++i) {
-            const Vec2<S> u = count > 1 ? stratified(i, columns, rows, ctx.rng.uniform2<S>()) : Vec2<S>(S(0.5));
+            const Vec2<S> u = sampler.is_area() ? stratified(i, columns, rows, ctx.rng.uniform2<S>()) : Vec2<S>(S(0.5));
             const auto incident = sampler.sample(u);
             if (!incident) continue;
             const S cos_theta = glm::dot(n, incident->direction);
