@@ -742,3 +742,19 @@ TEST_CASE("POV-Ray's render-mode headers parse: radiosity is skipped, photons ma
         }
     }
 }
+
+TEST_CASE("examples/scenes/area_lights.pov builds without a warning into POV-Ray's two grids", "[dsl][light][scenes]") {
+    std::vector<dsl::Diagnostic> w;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(w);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(w);
+    const auto b = dsl::build<float>(dsl::parse_file(std::string(PHOTON_SCENES_DIR) + "/area_lights.pov", po), bo);
+    CHECK(w.empty());
+    REQUIRE(b.scene.lights().size() == 2);
+    const auto& warm = std::get<AreaLight<float>>(b.scene.lights()[0]);
+    CHECK((warm.size1 == 8 && warm.size2 == 2 && warm.jitter && warm.axis1 == Vec3<float>(2, 0, 0)));
+    const auto& cool = std::get<AreaLight<float>>(b.scene.lights()[1]);
+    CHECK((cool.size1 == 4 && cool.size2 == 1 && !cool.jitter && cool.axis2 == Vec3<float>(0)));
+    CHECK(b.settings.shadow_samples == 16);  // the largest grid, 8 x 2
+}
