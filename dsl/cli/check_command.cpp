@@ -69,8 +69,13 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
     std::cout << "lights     " << scene.lights().size() << '\n';
     for (const auto& light : scene.lights()) {
         const float radius = light_radius(light);
-        std::cout << "           " << (radius > 0 ? "sphere light" : "point light") << " at " << vec(light_center(light));
-        if (radius > 0) std::cout << ", radius " << radius;
+        const auto* area = std::get_if<AreaLight<float>>(&light);
+        std::cout << "           " << (area ? "area light" : radius > 0 ? "sphere light" : "point light") << " at " << vec(light_center(light));
+        if (area)
+            std::cout << ", axes " << vec(area->axis1) << " and " << vec(area->axis2) << ", " << area->size1 << " x "
+                      << area->size2 << (area->jitter ? " jittered" : "") << (area->circular ? " circular" : "");
+        else if (radius > 0)
+            std::cout << ", radius " << radius;
         std::cout << ", power " << rgb(light_power(light)) << " W, intensity " << rgb(radiant_intensity(light))
                   << " W/sr";
         if (const auto& cone = light_cone(light))

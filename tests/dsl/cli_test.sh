@@ -58,7 +58,7 @@ grep -q "error-image: only the sppm and reference modes" "$work/err" || fail "--
 # A point light over glass: the reference cannot see its caustic and says so.
 printf 'camera { location <0,1,-2> look_at <0,0,0> }\nlight_source { <0,2,0>, rgb 1 }\nplane { y, 0 pigment { rgb 0.5 } }\nsphere { <0,0.5,0>, 0.3 pigment { rgbf 1 } finish { reflection { 0, 1 fresnel on } } interior { ior 1.5 } }\n' >"$work/point.pov"
 expect 0 "$photon" render "$work/point.pov" -o "$work/point.exr" $tiny --mode reference --no-mis
-grep -q "photon: warning: mode reference cannot see light from point lights through mirrors or glass" "$work/err" ||
+grep -q "photon: warning: mode reference cannot see light from point and area lights through mirrors or glass" "$work/err" ||
     fail "--mode reference: no warning for a point light over glass"
 grep -q "no MIS" "$work/err" || fail "--no-mis: not in the settings line"
 

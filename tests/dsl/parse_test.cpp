@@ -236,7 +236,7 @@ TEST_CASE("the camera follows POV-Ray's order: up/right, angle, look_at, transfo
     }
 }
 
-TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): area lights become spheres", "[dsl][light]") {
+TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): oriented area lights become spheres", "[dsl][light]") {
     std::vector<dsl::Diagnostic> w;
     SECTION("a point light with the fade rule") {
         const auto b = built(
@@ -269,6 +269,39 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): area light
         CHECK(l.power.z == Approx(4 * pi_d * 1000).epsilon(1e-12));
         CHECK(b.settings.shadow_samples == 81);  // POV-Ray's 9 x 9 grid, as no shadow_samples is given
         CHECK(w.empty());
+    }
+    SECTION("a rectangular area_light is POV-Ray's grid, its axes turned and scaled with the light") {
+        const auto b = built(
+            "light_source { <1, 4, 0>, rgb 1 area_light <2, 0, 0>, <0, 0, 1>, 5, 3 jitter adaptive 1 area_illumination\n"
+            "  scale 2 rotate y*90 }\n"
+            "light_source { <0, 4, 0>, rgb 1 area_light x, z, 4, 4 circular }\n"
+            "light_source { <0, 4, 0>, rgb 1 area_light x, z, 1, 1 }\n"
+            "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
+            &w);
+        REQUIRE(b.scene.lights().size() == 3);
+        const auto& a = std::get<AreaLight<double>>(b.scene.lights()[0]);
+        CHECK(near(a.center, {0, 8, -2}));
+        CHECK(near(a.axis1, {0, 0, -4}));
+        CHECK(near(a.axis2, {2, 0, 0}));
+        CHECK((a.size1 == 5 && a.size2 == 3 && a.jitter && !a.circular));
+        CHECK(radiant_intensity(b.scene.lights()[0]).x == Approx(pi_d));
+        const auto& c = std::get<AreaLight<double>>(b.scene.lights()[1]);
+        CHECK((c.circular && !c.jitter && c.size1 == 4));
+        CHECK(std::holds_alternative<PointLight<double>>(b.scene.lights()[2]));  // a 1 x 1 grid is its centre
+        CHECK(b.settings.shadow_samples == 16);  // the largest grid, as no shadow_samples is given
+        CHECK(w.empty());
+    }
+    SECTION("an oriented grid without jitter is approximated by a sphere, and says so; a 1-wide circular grid is an error") {
+        const auto b = built(
+            "light_source { <0, 4, 0>, rgb 1 area_light x*2, z*3, 4, 4 orient }\n"
+            "camera { location -5 look_at 0 } sphere { 0, 1 finish { ambient 0 } }\n",
+            &w);
+        CHECK(std::get<SphereLight<double>>(b.scene.lights()[0]).radius == Approx(1.0));  // |A1| / 2, as POV-Ray
+        REQUIRE(w.size() == 1);
+        CHECK(w[0].message.find("without `jitter`") != std::string::npos);
+        CHECK_THROWS_WITH(built("light_source { <0, 4, 0>, rgb 1 area_light x, z, 1, 4 circular }\n"
+                                "camera { location -5 look_at 0 } sphere { 0, 1 }\n"),
+                          Catch::Contains("more than 1 light along each axis"));
     }
     SECTION("without a fade, POV-Ray's light does not fall off: intensity pi * colour, constant irradiance") {
         const auto b = built(
@@ -708,4 +741,20 @@ TEST_CASE("POV-Ray's render-mode headers parse: radiosity is skipped, photons ma
             CHECK(w.empty());
         }
     }
+}
+
+TEST_CASE("examples/scenes/area_lights.pov builds without a warning into POV-Ray's two grids", "[dsl][light][scenes]") {
+    std::vector<dsl::Diagnostic> w;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(w);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(w);
+    const auto b = dsl::build<float>(dsl::parse_file(std::string(PHOTON_SCENES_DIR) + "/area_lights.pov", po), bo);
+    CHECK(w.empty());
+    REQUIRE(b.scene.lights().size() == 2);
+    const auto& warm = std::get<AreaLight<float>>(b.scene.lights()[0]);
+    CHECK((warm.size1 == 8 && warm.size2 == 2 && warm.jitter && warm.axis1 == Vec3<float>(2, 0, 0)));
+    const auto& cool = std::get<AreaLight<float>>(b.scene.lights()[1]);
+    CHECK((cool.size1 == 4 && cool.size2 == 1 && !cool.jitter && cool.axis2 == Vec3<float>(0)));
+    CHECK(b.settings.shadow_samples == 16);  // the largest grid, 8 x 2
 }

@@ -218,7 +218,11 @@ TEST_CASE("reference warns when a point light shines on mirrors or glass", "[ref
     const SphereLight<float> sphere{{0, 2, 0}, 0.1f, Rgb<float>(10)};
     const RenderStats blind = render(scene_with(point, true), camera, s).stats;
     REQUIRE(blind.warnings.size() == 1);
-    CHECK_THAT(blind.warnings[0].message, Catch::Contains("point lights through mirrors or glass"));
+    CHECK_THAT(blind.warnings[0].message, Catch::Contains("point and area lights through mirrors or glass"));
+    // An area light is a set of points: blind there too.
+    const AreaLight<float> area{.center = {0, 2, 0}, .axis1 = {0.2f, 0, 0}, .axis2 = {0, 0, 0.2f}, .size1 = 3, .size2 = 3,
+                                .power = Rgb<float>(10)};
+    CHECK(render(scene_with(area, true), camera, s).stats.warnings.size() == 1);
     CHECK(render(scene_with(sphere, true), camera, s).stats.warnings.empty());
     CHECK(render(scene_with(point, false), camera, s).stats.warnings.empty());
     s.mode = RenderMode::rt;

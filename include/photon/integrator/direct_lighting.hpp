@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Direct light by shadow rays (paper, section 5.1): one ray per point light, n x n stratified
-// rays per sphere light, whose unoccluded estimate is exact and whose partial occlusion gives
+// rays per sphere light, one per emitter (or jittered cell) of an area light's grid, whose unoccluded estimate is exact and whose partial occlusion gives
 // soft shadows; none for a light that casts no shadows. The sky's direct light joins it
 // (environment_lighting.hpp). POV-Ray's highlights and brilliance
 // (highlight.hpp) are added here only, for direct light.
@@ -52,9 +52,8 @@ template <class SceneT, Scalar S>
         if (l < reaches.size() && !reaches[l]) continue;
         const Light<S>& light = lights[l];
         const IncidentSampler<S> sampler(light, x);
-        const bool area = sampler.is_area();
-        const unsigned grid = area ? strata_per_axis(shadow_samples) : 1u;
-        const unsigned count = grid * grid;
+        const auto [columns, rows] = sampler.strata(shadow_samples);
+        const unsigned count = columns * rows;
         const bool shadows = light_casts_shadows(light);  // a `shadowless` light: no shadow rays
         // All shadow rays to this light stay in the box around their origin and the light
         // (moved by the origin's offset, as the rays are), so only the objects touching that
@@ -73,7 +72,7 @@ template <class SceneT, Scalar S>
         }
         Rgb<S> sum(S(0));
         for (unsigned i = 0; i < count; ++i) {
-            const Vec2<S> u = area ? stratified(i, grid, ctx.rng.uniform2<S>()) : Vec2<S>(S(0.5));
+            const Vec2<S> u = sampler.is_area() ? stratified(i, columns, rows, ctx.rng.uniform2<S>()) : Vec2<S>(S(0.5));
             const auto incident = sampler.sample(u);
             if (!incident) continue;
             const S cos_theta = glm::dot(n, incident->direction);

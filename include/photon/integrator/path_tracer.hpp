@@ -40,18 +40,18 @@ template <Scalar S> [[nodiscard]] S power_heuristic(S pdf, S other) noexcept {
 }
 
 /// What the reference cannot see in `scene`, as a sentence (empty when it sees everything): a
-/// point light shining through mirrors or glass onto diffuse surfaces (L S+ D E) is a path no
-/// path tracer samples, so it renders black.
+/// point or area light (points, area_light.hpp) shining through mirrors or glass onto diffuse
+/// surfaces (L S+ D E) is a path no path tracer samples, so it renders black.
 template <class SceneT> [[nodiscard]] std::string reference_blind_spot(const SceneT& scene) {
     bool point_light = false, specular = false, diffuse = false;
-    for (const auto& light : scene.lights()) point_light = point_light || (light_radius(light) == 0 && !is_black(light_power(light)));
+    for (const auto& light : scene.lights()) point_light = point_light || (!light_has_surface(light) && !is_black(light_power(light)));
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
         specular = specular || scene.any_material_of(i, is_specular_material);
         diffuse = diffuse || scene.any_material_of(i, has_diffuse_material);
     }
     if (!point_light || !specular || !diffuse) return {};
-    return "mode reference cannot see light from point lights through mirrors or glass onto diffuse surfaces "
-           "(L S+ D E caustics): it renders them black; use sphere lights (area_light) for a complete reference";
+    return "mode reference cannot see light from point and area lights through mirrors or glass onto diffuse "
+           "surfaces (L S+ D E caustics): it renders them black; use sphere lights for a complete reference";
 }
 
 template <class SceneT> class PathTracer {

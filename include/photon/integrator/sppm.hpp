@@ -150,7 +150,7 @@ template <class SceneT>
                     const auto surface = scene.intersect(ray);
                     ++block.rays;
                     if (!surface) break;
-                    if (depth == 0 && !sky) power *= first_hit_scale(lights[l], surface->hit.point);  // the light's falloff
+                    if (depth == 0 && !sky) power *= first_hit_scale(lights[l], surface->hit.point, ray.origin);  // the light's falloff
                     const Material<S>& material = *surface->material;
                     const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
                     power *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass

@@ -2,24 +2,29 @@
 #pragma once
 // Lights as the two passes see them: photon emission (pass 1) and incident light at a shading
 // point for shadow rays (pass 2). Point and spherical lights share both: a point light is the
-// limit of a sphere light of radius 0. A light's falloff (falloff.hpp) and its cone's profile
-// (cone.hpp) scale both alike: direct light by g(d) and the profile, photons by the profile at
-// emission and by g(d) d^2 at their first hit (first_hit_scale).
+// limit of a sphere light of radius 0. An area light (area_light.hpp) is a grid or a continuum of
+// point emitters: photons leave from one of them, shadow rays aim at one of them. A light's
+// falloff (falloff.hpp) and its cone's profile (cone.hpp) scale both alike: direct light by g(d)
+// and the profile, photons by the profile at emission and by g(d) d^2 at their first hit
+// (first_hit_scale), d from the centre, or from its emitter for an area light.
 
 #include <cmath>
+#include <algorithm>
 #include <optional>
+#include <utility>
 #include <variant>
 
 #include "../geometry/ray.hpp"
 #include "../math/frame.hpp"
 #include "../math/rng.hpp"
 #include "../math/sampling.hpp"
+#include "area_light.hpp"
 #include "point_light.hpp"
 #include "sphere_light.hpp"
 
 namespace photon {
 
-template <Scalar S> using Light = std::variant<PointLight<S>, SphereLight<S>>;
+template <Scalar S> using Light = std::variant<PointLight<S>, SphereLight<S>, AreaLight<S>>;
 
 /// How photon directions are drawn: `rejection` as the paper (points in a cube kept when inside
 /// the unit ball, and inside the cone if any), `direct` by inverting the distribution. Both are
@@ -31,10 +36,18 @@ template <Scalar S> [[nodiscard]] Vec3<S> light_center(const Light<S>& light) no
         if constexpr (requires { l.center; }) return l.center; else return l.position;
     }, light);
 }
+/// Radius of the ball around light_center that holds every point light can leave from: a sphere
+/// light's radius, the ball around an area light's emitters, 0 for a point light.
 template <Scalar S> [[nodiscard]] S light_radius(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) {
-        if constexpr (requires { l.radius; }) return l.radius; else return S(0);
+        if constexpr (requires { l.radius; }) return l.radius;
+        else if constexpr (requires { l.bounding_radius(); }) return l.bounding_radius();
+        else return S(0);
     }, light);
+}
+/// Whether rays can meet the light (a sphere light's surface); point and area lights are points.
+template <Scalar S> [[nodiscard]] bool light_has_surface(const Light<S>& light) noexcept {
+    return std::holds_alternative<SphereLight<S>>(light);
 }
 template <Scalar S> [[nodiscard]] const Rgb<S>& light_power(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) -> const Rgb<S>& { return l.power; }, light);
@@ -79,11 +92,15 @@ template <Scalar S> [[nodiscard]] S emission_weight(const Light<S>& light, const
 }
 /// Factor on the power of a photon from `light` at its first surface hit `p`: g(d) d^2 for the
 /// distance d from the light's centre (falloff.hpp), so that the first-hit irradiance follows
-/// the light's falloff; exactly 1 for the physical light. Later bounces are physical.
-template <Scalar S> [[nodiscard]] S first_hit_scale(const Light<S>& light, const Vec3<S>& p) noexcept {
+/// the light's falloff; exactly 1 for the physical light. Later bounces are physical. An area
+/// light's emitters fall off each from itself (POV-Ray's `area_illumination`): d is from the
+/// photon's emission point `origin`.
+template <Scalar S>
+[[nodiscard]] S first_hit_scale(const Light<S>& light, const Vec3<S>& p, const Vec3<S>& origin) noexcept {
     const Falloff<S>& falloff = light_falloff(light);
     if (falloff.is_physical()) return S(1);
-    return falloff.relative_to_inverse_square(glm::length(p - light_center(light)));
+    const Vec3<S> from = std::holds_alternative<AreaLight<S>>(light) ? origin : light_center(light);
+    return falloff.relative_to_inverse_square(glm::length(p - from));
 }
 
 /// Unit emission direction, uniform over the light's emitting directions.
@@ -102,9 +119,11 @@ template <Scalar S>
 
 /// Origin of a photon leaving the light along unit `direction`. For a sphere light, rays of one
 /// direction leave a Lambertian sphere uniformly over its silhouette disc, so the origin is a
-/// uniform point of that disc lifted onto the sphere's near side.
+/// uniform point of that disc lifted onto the sphere's near side. For an area light, one emitter
+/// (each carries the same power into every direction).
 template <Scalar S>
 [[nodiscard]] Vec3<S> sample_emission_origin(const Light<S>& light, const Vec3<S>& direction, Vec2<S> u) noexcept {
+    if (const auto* area = std::get_if<AreaLight<S>>(&light)) return area->center + area->emitter_offset(u);
     const S radius = light_radius(light);
     const Vec3<S> center = light_center(light);
     if (radius == S(0)) return center;
@@ -126,11 +145,19 @@ template <Scalar S> struct IncidentLight {
 /// is computed once, so n x n shadow samples cost one square root each. Sphere lights are sampled
 /// uniformly in the solid angle they subtend, so the estimate is exact for an unoccluded light
 /// (with its falloff evaluated at the centre's distance, as POV-Ray does for its area lights).
+/// An area light's samples are its emitters, each lighting x by its intensity times its falloff
+/// at its own distance (POV-Ray's `area_illumination`).
 template <Scalar S> class IncidentSampler {
 public:
     IncidentSampler(const Light<S>& light, const Vec3<S>& x) noexcept : cone_(light_cone(light)) {
         to_center_ = light_center(light) - x;
         const S d2 = glm::dot(to_center_, to_center_);
+        if ((area_ = std::get_if<AreaLight<S>>(&light))) {
+            visible_ = true;  // but nothing from an emitter at x itself
+            falloff_ = &light_falloff(light);
+            value_ = radiant_intensity(light);
+            return;
+        }
         radius_ = light_radius(light);
         visible_ = d2 > radius_ * radius_;  // false inside the light
         if (!visible_) return;
@@ -155,8 +182,21 @@ public:
     /// The falloff over the physical one at x (Falloff::relative_to_inverse_square): 1 when physical.
     [[nodiscard]] S falloff_scale() const noexcept { return relative_; }
 
-    /// Whether more than one sample can differ (an area light).
-    [[nodiscard]] bool is_area() const noexcept { return radius_ > S(0); }
+    /// Whether more than one sample can differ (a sphere or area light).
+    [[nodiscard]] bool is_area() const noexcept { return radius_ > S(0) || area_; }
+    /// Whether no ray can meet the light (a point or area light): its samples' directions are
+    /// deltas, which no other strategy finds.
+    [[nodiscard]] bool is_delta() const noexcept { return !(radius_ > S(0)); }
+
+    /// Strata per axis for `samples` shadow rays: 1 x 1 for a point light, n x n with n^2 >=
+    /// samples for a sphere, an area light's own N1 x N2 grid (one ray per emitter, or per
+    /// jittered cell as POV-Ray) when it has no more cells than `samples`, else n x n.
+    [[nodiscard]] std::pair<unsigned, unsigned> strata(unsigned samples) const noexcept {
+        if (!is_area()) return {1u, 1u};
+        if (area_ && area_->size1 * area_->size2 <= std::max(samples, 1u)) return {area_->size1, area_->size2};
+        const unsigned n = strata_per_axis(samples);
+        return {n, n};
+    }
 
     /// Density per steradian of sample()'s directions at unit `direction`: 1 / the solid angle
     /// the sphere subtends if the line along `direction` meets the sphere, else 0 (also for a
@@ -178,6 +218,17 @@ public:
     /// is outside the cone or inside the light.
     [[nodiscard]] std::optional<IncidentLight<S>> sample(Vec2<S> u) const noexcept {
         if (!visible_) return std::nullopt;
+        if (area_) {
+            const Vec3<S> to = to_center_ + area_->emitter_offset(u);
+            const S d2 = glm::dot(to, to);
+            if (!(d2 > S(0))) return std::nullopt;  // x on an emitter
+            const S d = std::sqrt(d2);
+            const Vec3<S> dir = to / d;
+            const S profile = cone_ ? cone_->profile(-dir) : S(1);
+            if (!(profile > S(0))) return std::nullopt;
+            const S g = falloff_->is_physical() ? S(1) / d2 : falloff_->irradiance_per_intensity(d);
+            return IncidentLight<S>{dir, d, value_ * (profile * g)};
+        }
         if (radius_ == S(0)) {
             const S profile = cone_ ? cone_->profile(-axis_) : S(1);
             if (!(profile > S(0))) return std::nullopt;
@@ -194,6 +245,8 @@ public:
 
 private:
     const std::optional<Cone<S>>& cone_;
+    const AreaLight<S>* area_ = nullptr;
+    const Falloff<S>* falloff_ = nullptr;  ///< an area light's, applied per emitter
     Vec3<S> to_center_{}, axis_{};
     S radius_ = S(0), distance_ = S(0), one_minus_cos_ = S(0), solid_angle_ = S(0), relative_ = S(1);
     Frame<S> frame_{};

@@ -14,19 +14,20 @@ namespace photon {
 
 /// Radiance leaving the surface of a sphere light (in the directions its cone lets out).
 template <Scalar S> [[nodiscard]] Rgb<S> surface_radiance(const Light<S>& light) noexcept {
+    if (!light_has_surface(light)) return Rgb<S>(S(0));
     const S r = light_radius(light);
-    return r > S(0) ? radiant_intensity(light) / (pi<S> * r * r) : Rgb<S>(S(0));
+    return radiant_intensity(light) / (pi<S> * r * r);
 }
 
 /// One sample of a light seen from a shading point.
 template <Scalar S> struct LightSample {
     Vec3<S> direction;  ///< unit, from the shading point towards the light
     S distance;         ///< to the sampled point of the light (a shadow ray stops short of it)
-    /// Sphere light: the radiance arriving along `direction`. Point light (`delta`): the
+    /// Sphere light: the radiance arriving along `direction`. Point or area light (`delta`): the
     /// irradiance I / d^2 on a surface facing it, as the delta distribution integrates to.
     Rgb<S> radiance;
     S pdf;       ///< per steradian; 1 for a point light
-    bool delta;  ///< a point light: no other strategy can find its direction
+    bool delta;  ///< a point or area light (points): no other strategy can find its direction
 };
 
 /// One sample of `light` from `x` with u uniform in [0,1)^2; nothing when `x` is outside the
@@ -36,7 +37,7 @@ template <Scalar S>
     const IncidentSampler<S> sampler(light, x);
     const auto incident = sampler.sample(u);
     if (!incident) return std::nullopt;
-    if (!sampler.is_area()) return LightSample<S>{incident->direction, incident->distance, incident->irradiance, S(1), true};
+    if (sampler.is_delta()) return LightSample<S>{incident->direction, incident->distance, incident->irradiance, S(1), true};
     // The profile and falloff at x scale the sphere's radiance as they scale its irradiance.
     const S scale = sampler.falloff_scale() * intensity_profile(light, -incident->direction);
     return LightSample<S>{incident->direction, incident->distance, surface_radiance(light) * scale, sampler.sample_pdf(), false};
@@ -57,11 +58,11 @@ template <Scalar S> struct LightHit {
     Rgb<S> radiance;
 };
 
-/// The near intersection of `ray` (unit direction) with a sphere light; nothing for a point
+/// The near intersection of `ray` (unit direction) with a sphere light; nothing for a point or area
 /// light, a miss, or a ray starting inside the light.
 template <Scalar S> [[nodiscard]] std::optional<LightHit<S>> intersect_light(const Light<S>& light, const Ray<S>& ray) noexcept {
+    if (!light_has_surface(light)) return std::nullopt;  // point and area lights are points
     const S r = light_radius(light);
-    if (r == S(0)) return std::nullopt;
     const Vec3<S> oc = ray.origin - light_center(light);
     const S b = glm::dot(oc, ray.direction);
     const Vec3<S> closest = oc - b * ray.direction;

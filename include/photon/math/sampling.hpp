@@ -112,5 +112,12 @@ template <Scalar S>
     const S below_one = std::nextafter(S(1), S(0));
     return {std::min((S(i) + jitter.x) * inv, below_one), std::min((S(j) + jitter.y) * inv, below_one)};
 }
+/// Sample `index` of a columns x rows jittered grid over [0,1)^2.
+template <Scalar S>
+[[nodiscard]] Vec2<S> stratified(unsigned index, unsigned columns, unsigned rows, Vec2<S> jitter) noexcept {
+    const unsigned i = index % columns, j = index / columns;
+    const S below_one = std::nextafter(S(1), S(0));
+    return {std::min((S(i) + jitter.x) / S(columns), below_one), std::min((S(j) + jitter.y) / S(rows), below_one)};
+}
 
 }  // namespace photon

@@ -112,7 +112,7 @@ template <Scalar S> [[nodiscard]] std::string light_name(const Light<S>& light, 
     const Vec3<S> c = light_center(light);
     char at[96];
     std::snprintf(at, sizeof at, "<%g, %g, %g>", double(c.x), double(c.y), double(c.z));
-    return "light " + std::to_string(i) + " (" + (light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + ")";
+    return "light " + std::to_string(i) + " (" + (std::holds_alternative<AreaLight<S>>(light) ? "area" : light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + ")";
 }
 
 /// Whether some ray leaving `light` can hit object `i`: false only when the light has a cone

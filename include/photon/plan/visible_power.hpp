@@ -111,7 +111,7 @@ template <class SceneT>
             for (unsigned hit = 0; hit < 2; ++hit) {
                 const auto surface = scene.intersect(ray);
                 if (!surface) break;
-                if (hit == 0) weight *= double(first_hit_scale(lights[l], surface->hit.point));
+                if (hit == 0) weight *= double(first_hit_scale(lights[l], surface->hit.point, ray.origin));
                 const Material<S>& material = *surface->material;
                 if (material.has_diffuse() && camera_sees(scene, camera, surface->hit.point)) {
                     seen += weight;

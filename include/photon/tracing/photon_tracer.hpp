@@ -173,7 +173,7 @@ void trace_photon_path(const SceneT& scene, const Light<S>* light, Ray<S> ray, R
         const auto surface = scene.intersect(ray);
         ++block.rays;
         if (!surface) return;
-        if (depth == 0 && light) power *= first_hit_scale(*light, surface->hit.point);
+        if (depth == 0 && light) power *= first_hit_scale(*light, surface->hit.point, ray.origin);
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         // The transmittance is carried exactly (no roulette on it): absorbing glass is usually

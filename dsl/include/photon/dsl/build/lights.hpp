@@ -2,7 +2,7 @@
 #pragma once
 // POV-Ray's light_source as photon's lights, computing what POV-Ray 3.7 computes: its colour and
 // fade give the radiant intensity and the falloff (none, or POV-Ray's fade), its spotlight the
-// cone's profile, `shadowless` a light without shadow rays; area lights become spheres.
+// cone's profile, `shadowless` a light without shadow rays, `area_light` photon's AreaLight.
 
 #include <algorithm>
 #include <cmath>
@@ -43,13 +43,13 @@ struct PovLightIntensity {
 /// Radiant intensity (W/sr per channel) of a POV-Ray light along its axis (pov_light_intensity).
 [[nodiscard]] inline Vector3 radiant_intensity(const LightSource& l) { return pov_light_intensity(l).intensity; }
 
-/// Adds POV-Ray's `light_source` `l`, placed by `t`, to `scene`: a point light, or a sphere light
-/// for an area light, with POV-Ray's falloff and spotlight profile. Says what it approximates or
+/// Adds POV-Ray's `light_source` `l`, placed by `t`, to `scene`: a point light, POV-Ray's grid
+/// for an area light of more than one emitter (a sphere light for `orient`), with POV-Ray's
+/// falloff and spotlight profile. Says what it approximates or
 /// ignores; a value the library rejects is a dsl::Error at `at`.
 template <Scalar S>
 void add_pov_light(DefaultScene<S>& scene, const LightSource& l, const Transform& t, const SourceLocation& at,
                    Warnings& warn) {
-    constexpr double pi_d = 3.14159265358979323846;
     const auto item = [&](const char* k) {
         const auto it = l.written.find(k);
         return it != l.written.end() ? it->second : l.at;
@@ -82,25 +82,32 @@ void add_pov_light(DefaultScene<S>& scene, const LightSource& l, const Transform
         }
         const S solid_angle = cone ? cone->effective_solid_angle() : S(4) * pi<S>;
         const Rgb<S> power = Rgb<S>(intensity) * solid_angle;
-        double radius = 0;
-        if (l.area && l.area->size1 * l.area->size2 > 1) {
-            const AreaLight& a = *l.area;
-            const double l1 = glm::length(t.vector(a.axis1)), l2 = glm::length(t.vector(a.axis2));
-            if (a.circular && a.orient && std::abs(l1 - l2) <= 1e-9 * std::max(l1, l2)) {
-                radius = 0.5 * l1;
-            } else {
-                radius = a.circular ? 0.5 * std::sqrt(l1 * l2) : std::sqrt(l1 * l2 / pi_d);
-                warn(a.at,
-                     "photon's area lights are spheres: this `area_light` (without `circular orient` and "
-                     "equal axes) becomes a sphere light of radius " +
-                         format_number(radius) + " (same area)");
-            }
-        }
         const bool shadows = !l.shadowless;
-        if (radius > 0)
+        const AreaLight* a = l.area && l.area->size1 * l.area->size2 > 1 ? &*l.area : nullptr;
+        // POV-Ray stops at a circular light with a single emitter along an axis.
+        if (a && a->circular && (a->size1 < 2 || a->size2 < 2))
+            throw Error(a->at, "a circular area light needs more than 1 light along each axis (POV-Ray stops here too)");
+        if (a && a->orient) {
+            // POV-Ray turns the grid to face each lit point, a disc of diameter |A1| (it makes an
+            // oriented light circular and uses A1's length for both axes): what a Lambertian
+            // sphere of that diameter shows every point. Its unoccluded light is POV-Ray's (the
+            // centre's I cos / d^2); only the penumbra's profile can differ, by POV-Ray's denser
+            // diagonals and, without jitter, its separate shadows per emitter.
+            const double radius = 0.5 * glm::length(t.vector(a->axis1));
+            if (!a->jitter)
+                warn(a->at, "this oriented `area_light` without `jitter` (" + std::to_string(a->size1) + " x " +
+                                std::to_string(a->size2) + " separate shadows in POV-Ray) becomes one soft shadow: a sphere light of radius " +
+                                format_number(radius),
+                     "approximated light", "orient");
             scene.add_light(SphereLight<S>{Vec3<S>(position), S(radius), power, cone, falloff, shadows});
-        else
+        } else if (a) {
+            scene.add_light(photon::AreaLight<S>{.center = Vec3<S>(position), .axis1 = Vec3<S>(t.vector(a->axis1)),
+                                                 .axis2 = Vec3<S>(t.vector(a->axis2)), .size1 = unsigned(a->size1),
+                                                 .size2 = unsigned(a->size2), .jitter = a->jitter, .circular = a->circular,
+                                                 .power = power, .cone = cone, .falloff = falloff, .casts_shadows = shadows});
+        } else {
             scene.add_light(PointLight<S>{Vec3<S>(position), power, cone, falloff, shadows});
+        }
     } catch (const std::invalid_argument& e) {
         throw Error(at, e.what());
     }
