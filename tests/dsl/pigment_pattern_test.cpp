@@ -270,3 +270,12 @@ TEST_CASE("POV-Ray's cloudy skies (skies.inc, a pigment_map of patterns) build w
     }
     CHECK(hi - lo > 0.05);
 }
+
+TEST_CASE("listed colours need no comma: a second rgb starts the next colour, as in POV-Ray", "[dsl][texture]") {
+    const PatternScene b = build_patterned("sphere { 0, 1 pigment { checker rgb 1 rgb 0.5 } }\n"
+                                           "sphere { 0, 1 pigment { checker color rgb <1, 0, 0> green 0.5 rgbf <0, 0, 1, 0> } }\n");
+    CHECK(albedo(b, 0, {0.5, 0.5, 0.5}).y == Approx(0.6));      // cell (0, 0, 0): the first colour
+    CHECK(albedo(b, 0, {0.5, 0.5, 1.5}).y == Approx(0.6 * 0.5));  // cell (0, 0, 1): the second, not green
+    CHECK(albedo(b, 1, {0.5, 0.5, 0.5}) == Rgb<double>(0.6, 0.3, 0));  // `green 0.5` modifies the first
+    CHECK(albedo(b, 1, {0.5, 0.5, 1.5}) == Rgb<double>(0, 0, 0.6));
+}

@@ -87,7 +87,7 @@ inline bool Parser::parse_optional_bool() {
 }
 
 /// COLOR: [color|colour] followed by rgb/rgbf/rgbt/rgbft VECTOR, red/green/blue/filter/transmit
-/// FLOAT, or a colour expression, in any combination.
+/// FLOAT, or a colour expression, in any combination, with one rgb... at most and only first.
 inline Color Parser::parse_color(const std::string& what) {
     Color c;
     bool any = false;
@@ -96,6 +96,8 @@ inline Color Parser::parse_color(const std::string& what) {
     for (;;) {
         const Token t = peek();
         if (t.kind == TokenKind::identifier && one_of(t.text, {"rgb", "rgbf", "rgbt", "rgbft"})) {
+            // A second one starts the next colour, as in POV-Ray (Parse_Colour): `checker rgb 1 rgb 0.5`.
+            if (any) break;
             next();
             const SourceLocation at = peek().location;
             const Numeric n = parse_expression_for("the value of `" + t.text + "`");
