@@ -368,17 +368,27 @@ TEST_CASE("damaged scene files give a located error or a scene, never anything e
     }
 }
 
-TEST_CASE("a surface that reflects more than it receives is scaled down, with a warning", "[dsl][errors]") {
-    std::vector<dsl::Diagnostic> w;
-    dsl::BuildOptions bo;
-    bo.diagnostics = collect(w);
-    const auto b = dsl::build<double>(
-        dsl::parse_string("camera { location -5 look_at 0 } light_source { 5, rgb 1 }\n"
-                          "sphere { <0,0,0>, 1 pigment { rgb 0.8 } finish { ambient 0 diffuse 1 reflection 0.5 } }"),
-        bo);
-    CHECK_THAT(all_messages(w), Contains("diffuse 0.8 + reflection 0.5 + transmission 0 = 1.3 > 1 in the red channel; "
-                                         "photon scales its reflectances by 1/1.3"));
-    const auto m = b.scene.material_of(0).params();
+TEST_CASE("a surface that reflects more than it receives is seen as written and passes on less", "[dsl][errors]") {
+    const auto built = [](const std::string& global) {
+        std::vector<dsl::Diagnostic> w;
+        dsl::BuildOptions bo;
+        bo.diagnostics = collect(w);
+        const auto b = dsl::build<double>(
+            dsl::parse_string(global + "camera { location -5 look_at 0 } light_source { 5, rgb 1 }\n"
+                              "sphere { <0,0,0>, 1 pigment { rgb 0.8 } finish { ambient 0 diffuse 1 reflection 0.5 } }"),
+            bo);
+        return std::pair{all_messages(w), b.scene.material_of(0).params()};
+    };
+    // Without radiosity or photons POV-Ray passes no light on: photon's image is POV-Ray's.
+    const auto [quiet, m] = built("");
+    CHECK_THAT(quiet, !Contains("reflects more light"));
     CHECK(m.diffuse.x == Approx(0.8 / 1.3));
     CHECK(m.specular.x == Approx(0.5 / 1.3));
+    CHECK(m.seen_gain == Approx(1.3));
+    // With radiosity POV-Ray passes the excess on too; photon says it does not.
+    const auto [warned, mr] = built("global_settings { radiosity { } }\n");
+    CHECK_THAT(warned, Contains("diffuse 0.8 + reflection 0.5 + transmission 0 = 1.3 > 1 in the red channel; the "
+                                "camera sees it as written, but photon scales the light it passes on by 1/1.3 to "
+                                "conserve energy (POV-Ray's radiosity passes all of it on)"));
+    CHECK(mr.seen_gain == Approx(1.3));
 }

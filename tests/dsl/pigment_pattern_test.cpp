@@ -166,10 +166,13 @@ TEST_CASE("what photon cannot evaluate is averaged with a warning that says why"
 }
 
 TEST_CASE("a pattern's brightest colour is what the energy check scales", "[dsl][texture]") {
-    const PatternScene b = build_patterned("sphere { 0, 1 pigment { checker rgb 1, rgb 0.2 } "
-                               "finish { ambient 0 diffuse 1 reflection 0.3 } }\n");
+    // Warned under radiosity only: without it the camera sees the surface as POV-Ray does.
+    const PatternScene b = build_patterned("global_settings { radiosity { } }\n"
+                                           "sphere { 0, 1 pigment { checker rgb 1, rgb 0.2 } "
+                                           "finish { ambient 0 diffuse 1 reflection 0.3 } }\n");
     CHECK_THAT(all_messages(b.warnings), Contains("diffuse (the pattern's brightest colour) 1 + reflection 0.3"));
     const auto& m = b.built->scene.material_of(0);
+    CHECK(m.seen_gain() == Approx(1.3));
     CHECK(m.diffuse_at({0.5, 0.5, 0.5}).x == Approx(1 / 1.3));
     CHECK(m.diffuse_at({0.5, 0.5, 1.5}).x == Approx(0.2 / 1.3));
     CHECK(m.params().specular.x == Approx(0.3 / 1.3));

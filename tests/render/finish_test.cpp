@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // POV-Ray's finish terms (material/highlight.hpp, MaterialParams::ambient): each term against a
 // hand computation of POV-Ray 3.7's formula; direct light with all of them against POV-Ray's sum;
-// every mode rendering them alike; and an ambient radiance that is seen but lights nothing.
+// every mode rendering them alike; an ambient radiance that is seen but lights nothing; and a
+// surface's seen gain (what the camera sees of a surface reflecting over 1, as POV-Ray renders it).
 
 #include <catch2/catch.hpp>
 
@@ -228,6 +229,64 @@ TEST_CASE("an ambient radiance is seen by the camera and lights nothing, in ever
                 CHECK(d.x == Approx(0.3).epsilon(1e-4));
                 CHECK(d.y == Approx(0.2).epsilon(1e-4));
                 CHECK(d.z == Approx(0.1).epsilon(1e-4));
+            }
+        }
+        CHECK(floor_pixels > 50);
+        CHECK(wall_pixels > 50);
+    }
+}
+
+TEST_CASE("a surface seen with a gain shows it to the camera and passes on no more light, in every mode",
+          "[finish][render]") {
+    // POV-Ray's surfaces that reflect more than they receive (MaterialParams::seen_gain): a wall
+    // with diffuse and mirror terms, seen through a gain of 2 or not, on a floor it lights.
+    const auto make = [](double gain) {
+        auto scene = std::make_unique<DefaultScene<double>>();
+        scene->add(Plane<double>({0, 1, 0}, 0), scene->add_material(Material<double>::lambertian(Rgb<double>(0.6))));
+        MaterialParams<double> wall;
+        wall.diffuse = Rgb<double>(0.5, 0.4, 0.3);
+        wall.specular = Rgb<double>(0.3);
+        wall.seen_gain = gain;
+        scene->add(Box<double>({-1, 0, 1}, {1, 1.5, 1.2}), scene->add_material(Material<double>(wall)));
+        scene->add_light(SphereLight<double>{.center = {0.5, 1.8, -0.5}, .radius = 0.1, .power = Rgb<double>(30.0)});
+        scene->commit();
+        return scene;
+    };
+    const auto doubled = make(2.0), plain = make(1.0);
+    const auto camera = PinholeCamera<double>::look_at({0, 1.2, -2}, {0, 0.4, 0.5}, {0, 1, 0}, 60, 4.0 / 3.0);
+    constexpr unsigned width = 24, height = 18;
+    std::vector<int> seen(std::size_t(width) * height, -1);  // one object under the whole footprint, else -1
+    for (unsigned y = 0; y < height; ++y)
+        for (unsigned x = 0; x < width; ++x) {
+            int object = -2;
+            for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.5}}) {
+                const auto hit = plain->intersect(*camera.ray((x + u) / width, (y + v) / height));
+                const int o = hit ? int(hit->object) : -1;
+                object = object == -2 || object == o ? o : -3;
+            }
+            seen[std::size_t(y) * width + x] = object < 0 ? -1 : object;
+        }
+    RenderSettings s;
+    s.width = width, s.height = height;
+    s.samples_per_pixel = 2;
+    s.global_photons = 20'000;
+    s.caustic_photons = 0;
+    s.final_gather_rays = 16;
+    s.sppm_passes = 4;
+    s.sppm_photons_per_pass = 5'000;
+    for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::sppm, RenderMode::reference}) {
+        s.mode = mode;
+        const Film with = render(*doubled, camera, s).film, without = render(*plain, camera, s).film;
+        int floor_pixels = 0, wall_pixels = 0;
+        for (std::size_t i = 0; i < seen.size(); ++i) {
+            INFO("mode " << to_string(mode) << ", pixel " << i);
+            if (seen[i] == 0) {  // the floor: lit by the wall as before, with the same random numbers
+                ++floor_pixels;
+                CHECK(with.pixels()[i] == without.pixels()[i]);
+            } else if (seen[i] == 1) {  // the wall: all it shows, doubled (the floor in its mirror too)
+                ++wall_pixels;
+                for (int c = 0; c < 3; ++c) CHECK(with.pixels()[i][c] == Approx(2 * without.pixels()[i][c]).epsilon(1e-4));
+                CHECK(without.pixels()[i].x > 0.01f);
             }
         }
         CHECK(floor_pixels > 50);

@@ -91,12 +91,14 @@ public:
             // and brilliance show here, and only here, as in radiance() and sppm's camera paths.
             const bool seen = arrival.kind == Arrival::unseen;
             if (seen) result += throughput * material.ambient_at(x);
+            // What the camera sees of x is seen_gain times what x passes on (material.hpp).
+            const S gain = seen ? material.seen_gain() : S(1);
             if (material.has_diffuse() || (seen && material.has_highlight()))  // a highlight needs no diffuse
                 result += throughput * sample_lights(x, offset_origin(x, f.normal, error), f.shading, f.normal,
-                                                     -ray.direction, material, sc.diffuse, pd, seen, ctx);
+                                                     -ray.direction, material, sc.diffuse * gain, pd, seen, ctx);
             const PhotonScatter<S> s = russian_roulette(material, sc, f, ray.direction, ctx.rng, PathFlow::from_camera);
             if (s.event == ScatterEvent::absorbed) break;
-            throughput *= s.weight;
+            throughput *= s.weight * gain;
             // Brilliance makes the direct light here something no path samples: light sampling
             // alone counts it (weight 1), so the continuation gets no MIS share (density 0).
             if (s.event == ScatterEvent::diffuse)

@@ -50,11 +50,12 @@ public:
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         Rgb<S> result = material.ambient_at(x);  // seen by camera, mirror and glass rays, not by gathers
+        const S gain = material.seen_gain();      // the surface as written, where it reflects over 1
         // A highlight shows on a surface without diffuse reflection too (POV-Ray's black or glass
         // ball with `phong 1`): direct light is shaded for either.
         if (material.has_diffuse() || material.has_highlight()) {
             const Vec3<S> above = offset_origin(x, f.normal, error);
-            const Rgb<S> albedo = material.diffuse_at(x);
+            const Rgb<S> albedo = material.diffuse_at(x) * gain;
             const Rgb<S> brdf = albedo * inv_pi<S>;
             switch (settings_.mode) {
             case RenderMode::rt:
@@ -80,7 +81,7 @@ public:
             }
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
-            result += specular(ray, *surface, f, error, depth, ctx, false);
+            result += gain * specular(ray, *surface, f, error, depth, ctx, false);
         result *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
         const auto fog = fog_seen(scene_, ray, surface, &f);
         return fog ? fog->apply(result) : result;

@@ -87,11 +87,12 @@ template <class SceneT>
         const Vec3<S>& x = surface->hit.point;
         const S error = intersection_error(x, ray.origin);
         path.direct += throughput * material.ambient_at(x);  // as radiance() adds it: seen, lighting nothing
+        const S gain = material.seen_gain();  // the surface as written, where it reflects over 1 (material.hpp)
         if (material.has_diffuse() || material.has_highlight()) {  // as radiance(): a highlight needs no diffuse
             const Vec3<S> above = offset_origin(x, f.normal, error);
             // The sky by as many shadow rays per pass as an area light: passes average them.
             path.direct += throughput * direct_lighting(scene, x, above, f.shading, f.normal, -ray.direction, material,
-                                                        material.diffuse_at(x), settings.shadow_samples, ctx, {},
+                                                        material.diffuse_at(x) * gain, settings.shadow_samples, ctx, {},
                                                         settings.shadow_samples);
         }
         const bool continues = depth < settings.max_ray_depth && material.is_specular();
@@ -103,16 +104,16 @@ template <class SceneT>
         if (!(total > S(0))) return path;
         const S psi = ctx.rng.uniform<S>() * total;
         if (psi < pd) {
-            path.point = VisiblePoint<S>{x, f.normal, throughput * sc.diffuse * (inv_pi<S> * total / pd), length};
+            path.point = VisiblePoint<S>{x, f.normal, throughput * sc.diffuse * (gain * inv_pi<S> * total / pd), length};
             return path;
         }
         if (psi < pd + ps || pt == S(0)) {
-            throughput *= sc.specular * (total / ps);
+            throughput *= sc.specular * (gain * total / ps);
             ++ctx.rays.reflection;
             ray = Ray<S>{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)};
             continue;
         }
-        throughput *= sc.transmission * (total / pt);
+        throughput *= sc.transmission * (gain * total / pt);
         if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering))) {
             ++ctx.rays.refraction;
             ray = Ray<S>{offset_origin(x, -f.normal, error), *refracted};

@@ -59,6 +59,12 @@ template <Scalar S> struct MaterialParams {
     AnyNormalField<S> normal_field{};
     /// What light loses per straight segment it travels inside the surface (clear by default).
     Absorption<S> absorption{};
+    /// What the camera sees of the surface (its diffuse, mirror and glass terms, directly or
+    /// through mirrors and glass) is seen_gain times what it passes on to photons and gathers.
+    /// A POV-Ray surface may reflect more than it receives (diffuse 0.9 on a pigment of 1.2):
+    /// its reflectances are scaled to a sum <= 1 for light transport, which must converge, and
+    /// this gain gives the camera the surface as written. Not physical, so 1 by default.
+    S seen_gain = S(1);
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -124,6 +130,8 @@ public:
     [[nodiscard]] bool has_highlight() const noexcept { return params_.phong > S(0) || params_.blinn > S(0); }
     /// True when direct light's diffuse term is not Lambertian (brilliance other than 1).
     [[nodiscard]] bool has_brilliance() const noexcept { return params_.brilliance != S(1); }
+    /// Factor on the diffuse, mirror and glass terms the camera sees (MaterialParams::seen_gain).
+    [[nodiscard]] S seen_gain() const noexcept { return params_.seen_gain; }
     /// Whether a normal field tilts this surface's shading normal.
     [[nodiscard]] bool has_normal_field() const noexcept { return bool(params_.normal_field); }
     /// The unit shading normal at `p` for the unit outward geometric normal `n` (n itself
@@ -206,6 +214,11 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
     if (!(p.brilliance >= S(0)) || !std::isfinite(p.brilliance)) {
         std::ostringstream os;
         os << "brilliance must be finite and >= 0, got " << p.brilliance;
+        fail(os.str());
+    }
+    if (!(p.seen_gain > S(0)) || !std::isfinite(p.seen_gain)) {
+        std::ostringstream os;
+        os << "seen_gain must be positive and finite, got " << p.seen_gain;
         fail(os.str());
     }
     check_rgb(p.ambient, "ambient", "radiance");

@@ -194,20 +194,20 @@ template <Scalar S>
     if (glows) p.ambient_texture = AnyReflectanceField<S>(LayeredPigment<S>(std::move(glow_layers)));
     p.highlight_color = Rgb<S>(S(1));  // metallic highlights take the composite's colour
 
-    const Rgb<S> sum = diffuse.upper_bound() + p.specular + p.transmission;
-    const int worst = sum.x >= sum.y && sum.x >= sum.z ? 0 : (sum.y >= sum.z ? 1 : 2);
-    if (sum[worst] > S(1 + 1e-9)) {
-        constexpr const char* channel[] = {"red", "green", "blue"};
-        warn(place(*stack.front()),
-             std::string("the layered texture reflects more light than it receives: diffuse (the layers' brightest) ") +
-                 format_number(double(diffuse.upper_bound()[worst])) + " + reflection " +
-                 format_number(double(p.specular[worst])) + " + transmission " +
-                 format_number(double(p.transmission[worst])) + " = " + format_number(double(sum[worst])) +
-                 " > 1 in the " + channel[worst] + " channel; photon scales its reflectances by 1/" +
-                 format_number(double(sum[worst])) + " to conserve energy",
-             "approximated finish", "finish");
-        p.diffuse /= sum[worst], p.specular /= sum[worst], p.transmission /= sum[worst];
-    }
+    const Rgb<S> top_diffuse = diffuse.upper_bound();
+    const double gain = conserve_energy(
+        Vector3(top_diffuse + p.specular + p.transmission), global,
+        [&](const std::string& m) {
+            warn(place(*stack.front()),
+                 "the layered texture reflects more light than it receives: diffuse (the layers' brightest) " + m,
+                 "approximated finish", "finish");
+        },
+        [&](int c) {
+            return format_number(double(top_diffuse[c])) + " + reflection " + format_number(double(p.specular[c])) +
+                   " + transmission " + format_number(double(p.transmission[c]));
+        });
+    p.diffuse /= S(gain), p.specular /= S(gain), p.transmission /= S(gain);
+    p.seen_gain = S(gain);
 
     const auto normal = topmost([](const Texture& t) { return t.normal && t.normal->pattern; });
     if (normal) {

@@ -54,6 +54,25 @@ template <Scalar S> [[nodiscard]] Absorption<S> interior_absorption(const Interi
     return f.emission + (ambient_counts ? f.ambient * global.ambient_light : Vector3(0.0));
 }
 
+/// POV-Ray renders a surface whose reflectances sum over 1 (diffuse 0.9 on a pigment of 1.2).
+/// Photon keeps what the camera sees as written (MaterialParams::seen_gain) and scales what the
+/// surface passes on by 1 / the largest channel sum, so that light transport converges. The
+/// image differs from POV-Ray's only where POV-Ray passes light on too: under radiosity or
+/// photons; only then `report` gets the message's tail (`terms(c)` names channel c's terms).
+/// Returns the gain (1 when the sum is at most 1).
+template <class Report, class Terms>
+[[nodiscard]] double conserve_energy(const Vector3& sum, const GlobalSettings& global, Report&& report, Terms&& terms) {
+    const int worst = sum.x >= sum.y && sum.x >= sum.z ? 0 : (sum.y >= sum.z ? 1 : 2);
+    if (!(sum[worst] > 1 + 1e-9)) return 1;
+    constexpr const char* channel[] = {"red", "green", "blue"};
+    if (global.radiosity || global.photons.has_value())
+        report(terms(worst) + " = " + format_number(sum[worst]) + " > 1 in the " + channel[worst] +
+               " channel; the camera sees it as written, but photon scales the light it passes on by 1/" +
+               format_number(sum[worst]) + " to conserve energy (POV-Ray's " +
+               (global.radiosity ? "radiosity passes" : "photons carry") + " all of it on)");
+    return sum[worst];
+}
+
 /// POV-Ray's texture and interior as photon's material: diffuse albedo = diffuse * pigment *
 /// (1 - filter - transmit) (for a patterned pigment, `diffuse` alone: the pattern's colours,
 /// library_pigment, carry the rest); transmission = filter * pigment + transmit, from a patterned
@@ -62,8 +81,9 @@ template <Scalar S> [[nodiscard]] Absorption<S> interior_absorption(const Interi
 /// phong and phong_size carry over, and POV-Ray's specular (blinn), roughness, metallic,
 /// brilliance, ambient and emission as POV-Ray 3.7 computes them (`version`: the scene's
 /// #version, none for a scene without one). Finish items photon does not render are reported to `warn`,
-/// as is a surface reflecting more than it receives, which is scaled down to conserve energy
-/// (reported at its finish, or at `object` for a default texture, which was written nowhere).
+/// as is a surface reflecting more than it receives where POV-Ray passes that light on
+/// (conserve_energy; reported at its finish, or at `object` for a default texture, which was
+/// written nowhere).
 template <Scalar S>
 [[nodiscard]] MaterialParams<S> material_params(const Texture& tex, const Interior* interior,
                                                 const GlobalSettings& global, std::optional<double> version,
@@ -163,29 +183,20 @@ template <Scalar S>
     for (const char* k : {"irid", "crand"})
         if (f.written.count(k)) warn(item(k), std::string("`") + k + "` is ignored by photon", "approximated finish", k);
 
-    // POV-Ray renders a surface that reflects more than it receives; photon, which conserves
-    // energy, scales its reflectances down (keeping their hue) and says so.
-    constexpr const char* channel[] = {"red", "green", "blue"};
-    int worst = 0;
-    for (int c = 1; c < 3; ++c)
-        if (diffuse_bound[c] + specular[c] + transmission[c] >
-            diffuse_bound[worst] + specular[worst] + transmission[worst])
-            worst = c;
-    const double sum = diffuse_bound[worst] + specular[worst] + transmission[worst];
-    if (sum > 1 + 1e-9) {
-        warn(at,
-             std::string("the surface reflects more light than it receives: diffuse ") +
-                 (pattern ? "(the pattern's brightest colour) " : "") + format_number(diffuse_bound[worst]) +
-                 " + reflection " + format_number(specular[worst]) + " + transmission " +
-                 format_number(transmission[worst]) + " = " + format_number(sum) + " > 1 in the " + channel[worst] +
-                 " channel; photon scales its reflectances by 1/" + format_number(sum) + " to conserve energy",
+    const double gain = conserve_energy(diffuse_bound + specular + transmission, global, [&](const std::string& m) {
+        warn(at, "the surface reflects more light than it receives: diffuse " +
+                     std::string(pattern ? "(the pattern's brightest colour) " : "") + m,
              "approximated finish", "finish");
-        diffuse /= sum, specular /= sum, transmission /= sum;
-    }
+    }, [&](int c) {
+        return format_number(diffuse_bound[c]) + " + reflection " + format_number(specular[c]) + " + transmission " +
+               format_number(transmission[c]);
+    });
+    diffuse /= gain, specular /= gain, transmission /= gain;
     MaterialParams<S> p;
     p.diffuse = Rgb<S>(diffuse);
     p.specular = Rgb<S>(specular);
     p.transmission = Rgb<S>(transmission);
+    p.seen_gain = S(gain);
     p.ior = S(ior);
     p.fresnel = fresnel;
     const Clamped<double> phong_size = physical_phong_size(f.phong, f.phong_size);
