@@ -2,7 +2,7 @@
 // CSG in the scene language: difference, intersection and merge with their children's own
 // modifiers, inverse and hollow (POV-Ray 3.7), built into one library Csg object whose leaves keep
 // their textures; children without an inside warn; inside() and trace() answer for CSG; export
-// writes it back for POV-Ray.
+// writes it back for POV-Ray; clipped_by, placed as POV-Ray places it.
 
 #include <catch2/catch.hpp>
 
@@ -169,6 +169,62 @@ TEST_CASE("inside() and trace() answer for CSG, export writes it back", "[dsl][c
     const Parsed again = parse(pov);
     REQUIRE(again.desc.objects.size() == 2);
     CHECK(std::get<dsl::CsgShape>(again.desc.objects[0].shape).children[1]->inverse);
+}
+
+TEST_CASE("clipped_by as POV-Ray places it: in the object's space where written, moved by what follows", "[dsl][csg]") {
+    // The clip is written after `translate 5*x` (it stays where written: the plane x = 5 keeps
+    // the sphere's half towards -x), then both move up by 1.
+    const CsgScene b = build_csg("sphere { 0, 1 translate 5*x clipped_by { plane { x, 5 } } translate y }\n");
+    CHECK(b.warnings.empty());
+    const DslCsg& c = only_csg(b);
+    CHECK(c.op() == photon::CsgOp::clip);
+    // From +x: through the cut (nothing there) to the inside of the far wall at x = 4.
+    auto h = b.scene.intersect(ray({10, 1, 0}, {-1, 0, 0}));
+    REQUIRE(h);
+    CHECK(h->hit.point.x == Approx(4));
+    // From -x: the outside of the kept half; from above at x = 5.5: nothing (clipped away).
+    h = b.scene.intersect(ray({-10, 1, 0}, {1, 0, 0}));
+    REQUIRE(h);
+    CHECK(h->hit.point.x == Approx(4));
+    CHECK_FALSE(b.scene.intersect(ray({5.5, 10, 0}, {0, -1, 0})));
+    CHECK(b.scene.intersect(ray({4.5, 10, 0}, {0, -1, 0})));
+
+    // A union's clip clips each of its objects; a CSG child's clip clips that child; several
+    // clip objects must all hold a point; `clipped_by { bounded_by }` clips by the bound.
+    const CsgScene u = build_csg("union { sphere { 0, 1 } sphere { 3*x, 1 } clipped_by { plane { y, 0 } } }\n"
+                                 "difference { box { <-1, -1, 5>, <1, 1, 7> } sphere { <0, 0, 5>, 0.5 clipped_by { plane { -z, -5 } } } }\n"
+                                 "sphere { <0, 0, 10>, 1 clipped_by { plane { y, 0 } plane { x, 0 } } }\n"
+                                 "sphere { <0, 0, 20>, 1 bounded_by { box { <-2, -2, 19>, <2, 0, 21> } } clipped_by { bounded_by } }\n");
+    CHECK(u.warnings.empty());
+    REQUIRE(u.scene.objects().size() == 5);
+    for (const double x : {0.0, 3.0}) {  // through the cut to the bottom
+        h = u.scene.intersect(ray({x, 10, 0}, {0, -1, 0}));
+        REQUIRE(h);
+        CHECK(h->hit.point.y == Approx(-1));
+    }
+    // The difference's sphere is clipped to z > 5: a ray along z from in front meets the box face at 5.
+    h = u.scene.intersect(ray({0, 0, 4}, {0, 0, 1}));
+    REQUIRE(h);
+    CHECK(h->hit.point.z == Approx(5.5));  // the hemisphere's hole wall, not the box face at 5
+    CHECK_FALSE(u.scene.intersect(ray({0.5, 10, 10}, {0, -1, 0})));
+    CHECK(u.scene.intersect(ray({-0.5, 10, 10}, {0, -1, 0})));
+    CHECK_FALSE(u.scene.intersect(ray({0, 0.5, 15}, {0, 0, 1})));  // clipped by the bound
+    h = u.scene.intersect(ray({0, -0.5, 15}, {0, 0, 1}));
+    REQUIRE(h);
+    CHECK(h->hit.point.z == Approx(20 - std::sqrt(0.75)));
+
+    // A mesh has no inside: its clip is ignored, with a warning at `clipped_by`.
+    const CsgScene m = build_csg("mesh { triangle { 0, x, y } clipped_by { plane { y, 0.5 } } }\n");
+    CHECK(places(m.warnings, "ignored effect") == std::vector<std::string>{"3:29 clipped_by"});
+
+    // Export writes the clip where the object's transformation put it, and reads back the same.
+    const Parsed p = parse("sphere { 0, 1 translate 5*x clipped_by { plane { x, 5 } } translate y }\n");
+    const std::string pov = dsl::export_pov(p.desc);
+    CHECK_THAT(pov, Contains("clipped_by {"));
+    const CsgScene again = build_csg(pov.substr(pov.find("sphere {")));
+    h = again.scene.intersect(ray({10, 1, 0}, {-1, 0, 0}));
+    REQUIRE(h);
+    CHECK(h->hit.point.x == Approx(4));
 }
 
 TEST_CASE("examples/scenes/csg.pov builds without warnings: four CSG objects, the cut in its cutter's red",

@@ -55,21 +55,28 @@ TEST_CASE("object queries: bad arguments and a missing geometry are located erro
                       Contains("2:10: error: `min_extent` needs the object's geometry"));
 }
 
-TEST_CASE("bounded_by that holds the whole object changes nothing and says nothing, one that cuts it is reported",
-          "[dsl][geometry]") {
+TEST_CASE("a bounded_by photon cannot show to hold its object is reported where POV-Ray keeps it", "[dsl][geometry]") {
+    // POV-Ray 3.7 removes the bounds of single shapes (Remove_Bounds) and keeps those of unions
+    // and CSG, of anything inside a CSG and of the objects of a union it keeps whole.
     dsl::ParseOptions o;
     o.geometry = dsl::library_object_geometry();
-    const auto p = parse("sphere { 0, 1 bounded_by { box { -1.01, 1.01 } } }\n"                      // 1: holds it
-                         "sphere { 0, 1 translate 5*x bounded_by { sphere { 5*x, 1.8 } } }\n"       // 2: after the move
-                         "sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }\n"                       // 3: cuts it
-                         "sphere { 0, 1 bounded_by { torus { 2, 1.5 } } }\n"                        // 4: not convex
-                         "sphere { 0, 1 clipped_by { plane { y, 0 } } bounded_by { clipped_by } }\n",  // 5: the clip
-                         o);
-    INFO(all_messages(p.warnings));
-    CHECK(places(p.warnings, "ignored effect") ==
-          std::vector<std::string>{"3:15 bounded_by", "4:15 bounded_by", "5:15 clipped_by"});
-    CHECK_THAT(all_messages(p.warnings), Contains("which photon could not rule out here"));
-    // Without the library's geometry the parser cannot tell, and says so.
-    const auto q = parse("sphere { 0, 1 bounded_by { box { -2, 2 } } }\n");
-    CHECK(places(q.warnings, "ignored effect") == std::vector<std::string>{"1:15 bounded_by"});
+    const StagedScene b = build_staged(
+                             "union { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { <-1.01, -1.01, -1.01>, <2.01, 1.01, 1.01> } } }\n"
+                             "union { sphere { 0, 1 } sphere { x, 1 } translate 5*x bounded_by { sphere { <5.5, 0, 0>, 2.1 } } }\n"
+                             "union { sphere { 0, 1 } sphere { x, 1 } bounded_by { sphere { 0, 0.5 } } }\n"
+                             "union { sphere { 0, 1 } sphere { x, 1 } bounded_by { torus { 2, 1.5 } } }\n"
+                             "sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } }\n"
+                             "difference { box { -1, 1 } sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } }\n"
+                             "union { sphere { 0, 1 } clipped_by { plane { y, 0 } } bounded_by { clipped_by } }\n"
+                             "union { sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } sphere { 3*x, 1 } bounded_by { box { -5, 5 } } }\n"   // kept: its union is kept whole
+                             "union { sphere { 0, 1 bounded_by { sphere { 0, 0.5 } } } sphere { 3*x, 1 } }\n",  // removed: its union is split
+        o, "");
+    INFO(all_messages(b.warnings));
+    CHECK(places(b.warnings, "ignored effect") ==
+          std::vector<std::string>{"3:41 bounded_by", "4:41 bounded_by", "6:42 bounded_by", "8:23 bounded_by"});
+    CHECK_THAT(all_messages(b.warnings), Contains("which photon could not rule out here"));
+    // Without the library's geometry the parser cannot tell, and says so where it matters.
+    const StagedScene q = build_staged("sphere { 0, 1 bounded_by { box { -2, 2 } } }\n"
+                                       "union { sphere { 0, 1 } sphere { x, 1 } bounded_by { box { -2, 2 } } }\n", {}, "");
+    CHECK(places(q.warnings, "ignored effect") == std::vector<std::string>{"2:41 bounded_by"});
 }

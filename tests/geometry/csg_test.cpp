@@ -2,7 +2,8 @@
 // CSG (geometry/csg.hpp): analytic hits and outward normals of each operation, rays starting
 // inside, inverse, coincident faces, grazing rays, tiny and huge scales; Crofton's formula
 // (isotropic uniform lines through a ball of radius B cross a surface of area A on average
-// A / (2 pi B^2) times) for a lens, a merge and a box with a corner cut away; and, for a tree with
+// A / (2 pi B^2) times) for a lens, a merge, a box with a corner cut away and a clipped sphere;
+// clipping (POV-Ray's clipped_by: an open surface); and, for a tree with
 // more leaves than the walk keeps on the stack, that between successive hits the inside test
 // agrees with the side the hits say.
 
@@ -190,6 +191,50 @@ TEMPLATE_TEST_CASE("csg: half-space clipping, coincident faces, grazing rays, em
     CHECK_THROWS_AS(TestCsg<S>::merge({}), std::invalid_argument);
 }
 
+TEMPLATE_TEST_CASE("csg clip: the lower half of a sphere's surface, open where the plane cut it, at tiny and huge scales",
+                   "[geometry][csg]", float, double) {
+    using S = TestType;
+    for (const double scale : {1e-4, 1.0, 1e5}) {
+        const S k = S(scale);
+        // POV-Ray's `sphere { 0, 1 clipped_by { plane { y, 0 } } }`: the plane keeps y < 0.
+        const auto bowl = TestCsg<S>::clipped(Sphere<S>({0, 0, 0}, k), {Plane<S>({0, 1, 0}, 0)});
+        CHECK(bowl.op() == CsgOp::clip);
+        CHECK(double(bowl.bounds().max.y) == Approx(0).margin(tol<S>() * scale));
+        // Down through the cut: the plane shows nothing, the bowl's inside does, its normal out of
+        // the result (down, along the ray).
+        Ray<S> down{{0, S(5) * k, 0}, {0, -1, 0}};
+        auto h = bowl.intersect(down);
+        REQUIRE(h);
+        CHECK(double(h->point.y) == Approx(-scale).margin(tol<S>() * scale));
+        CHECK(double(h->normal.y) == Approx(-1).epsilon(tol<S>()));
+        CHECK(h->part == 0);
+        CHECK_FALSE(next_hit(bowl, down, *h));
+        // Up from below: the bowl's outside, then nothing (the upper half is clipped away).
+        Ray<S> up{{0, S(-5) * k, 0}, {0, 1, 0}};
+        h = bowl.intersect(up);
+        REQUIRE(h);
+        CHECK(double(h->point.y) == Approx(-scale).margin(tol<S>() * scale));
+        CHECK(double(h->normal.y) == Approx(-1).epsilon(tol<S>()));
+        CHECK_FALSE(next_hit(bowl, up, *h));
+        // Across above the cut: nothing; across below it: the side of the bowl, twice.
+        CHECK_FALSE(bowl.intersect({{S(-5) * k, S(0.5) * k, 0}, {1, 0, 0}}));
+        Ray<S> across{{S(-5) * k, S(-0.5) * k, 0}, {1, 0, 0}};
+        h = bowl.intersect(across);
+        REQUIRE(h);
+        CHECK(double(h->point.x) == Approx(-std::sqrt(0.75) * scale).margin(tol<S>() * scale));
+        h = next_hit(bowl, across, *h);
+        REQUIRE(h);
+        CHECK(double(h->point.x) == Approx(std::sqrt(0.75) * scale).margin(tol<S>() * scale));
+        CHECK(bowl.contains({0, S(-0.5) * k, 0}));
+        CHECK_FALSE(bowl.contains({0, S(0.5) * k, 0}));
+        // Clipped twice (each clip must hold the point): a quarter of the sphere's surface.
+        const auto quarter = TestCsg<S>::clipped(Sphere<S>({0, 0, 0}, k), {Plane<S>({0, 1, 0}, 0), Plane<S>({1, 0, 0}, 0)});
+        CHECK_FALSE(quarter.intersect({{S(0.5) * k, S(-5) * k, 0}, {0, 1, 0}}));
+        CHECK(quarter.intersect({{S(-0.5) * k, S(-5) * k, 0}, {0, 1, 0}}));
+    }
+    CHECK_THROWS_AS(TestCsg<S>::clipped(Sphere<S>({0, 0, 0}, 1), {}), std::invalid_argument);
+}
+
 TEMPLATE_TEST_CASE("csg trees: nested operations, transformed leaves, children", "[geometry][csg]", float, double) {
     using S = TestType;
     // A ring: a torus minus a slab, intersected with an ellipsoid, all merged with a cylinder.
@@ -243,6 +288,8 @@ TEMPLATE_TEST_CASE("csg Crofton: mean crossings of random lines match the surfac
     check(TestCsg<S>::intersection({Sphere<S>({0, 0, S(0.5)}, 1), Sphere<S>({0, 0, S(-0.5)}, 1)}), 2 * pi, S(1.2));
     // Merge of the same spheres: both spheres less those caps.
     check(TestCsg<S>::merge({Sphere<S>({0, 0, S(0.5)}, 1), Sphere<S>({0, 0, S(-0.5)}, 1)}), 2 * (4 * pi - pi), S(1.8));
+    // The lower half of a unit sphere's surface, clipped by a plane: the cut shows no surface.
+    check(TestCsg<S>::clipped(Sphere<S>({0, 0, 0}, 1), {Plane<S>({0, 1, 0}, 0)}), 2 * pi, S(1.2));
     // A 2-cube minus the ball of radius 1 at a corner: 24 - 3 quarter discs + an eighth of the sphere.
     check(TestCsg<S>::difference({Box<S>({-1, -1, -1}, {1, 1, 1}), Sphere<S>({1, 1, 1}, 1)}),
           24 - 3 * pi / 4 + pi / 2, S(1.8));

@@ -2,7 +2,8 @@
 #pragma once
 // Constructive solid geometry with POV-Ray's rules: `merge` (the union of the children's
 // volumes, no inner surfaces), `intersection` (inside every child), `difference` (the first child
-// minus the union of the others), and `inverse` on any node (inside and outside swap).
+// minus the union of the others), `clip` (POV-Ray's `clipped_by`: the first child inside all the
+// others, whose surfaces never show) and `inverse` on any node (inside and outside swap).
 //
 // A Csg is a tree stored flat: its leaves are Solid shapes (one std::variant of the leaf types,
 // so it fits a Scene's closed set of shapes), its inner nodes the operations. A ray meets it
@@ -11,6 +12,8 @@
 // sets that leaf's inside state (entering when its outward normal faces the ray), and the first
 // crossing after which the tree's membership differs is the hit. Its normal is the leaf's,
 // turned to point out of the result (so it flips on subtracted parts and under `inverse`).
+// A crossing of a clipping leaf changes the membership but is never the hit: the walk goes on,
+// so a sphere clipped by a plane shows its inside through the cut, as in POV-Ray.
 //
 // Choices where the rules are silent:
 // - A leaf's state at the ray's origin is that implied by its first crossing (leaving: inside),
@@ -45,6 +48,7 @@ enum class CsgOp : std::uint8_t {
     merge,         ///< inside any child
     intersection,  ///< inside every child
     difference,    ///< inside the first child and no other
+    clip,          ///< inside every child, showing only the first child's surfaces
 };
 
 template <Scalar S, Solid... Leaves> class Csg {
@@ -74,10 +78,19 @@ public:
         return Csg(CsgOp::difference, std::move(children));
     }
 
+    /// POV-Ray's `clipped_by`: the parts of `object`'s surface inside every one of `clips`
+    /// (its inside is theirs and object's, as POV-Ray's Inside test with a clip). Throw
+    /// std::invalid_argument when `clips` is empty.
+    [[nodiscard]] static Csg clipped(Csg object, std::vector<Csg> clips) {
+        if (clips.empty()) throw std::invalid_argument("csg: clipped needs at least one clipping object");
+        clips.insert(clips.begin(), std::move(object));
+        return Csg(CsgOp::clip, std::move(clips));
+    }
+
     /// POV-Ray's `inverse`: inside and outside of this tree swap, and so do its normals.
     Csg& invert() noexcept {
         nodes_.back().inverted = !nodes_.back().inverted;
-        update_bounds();
+        bounds_ = node_bounds(root());
         return *this;
     }
 
@@ -185,6 +198,7 @@ private:
             for (std::uint32_t k = 0; k < n.count && !in; ++k) in = member(kids[k], inside);
             break;
         case CsgOp::intersection:
+        case CsgOp::clip:
             in = true;
             for (std::uint32_t k = 0; k < n.count && in; ++k) in = member(kids[k], inside);
             break;
@@ -207,7 +221,8 @@ private:
             for (std::uint32_t k = 0; k < n.count; ++k) b.extend(node_bounds(kids[k]));
             return b;
         }
-        case CsgOp::intersection: {
+        case CsgOp::intersection:
+        case CsgOp::clip: {
             BBox<S> b = BBox<S>::infinite();
             for (std::uint32_t k = 0; k < n.count; ++k) {
                 const BBox<S> c = node_bounds(kids[k]);
@@ -220,7 +235,21 @@ private:
         }
         return BBox<S>::infinite();
     }
-    void update_bounds() noexcept { bounds_ = node_bounds(root()); }
+    /// The bounds, and which leaves only clip (their crossings are never hits).
+    void update_bounds() {
+        bounds_ = node_bounds(root());
+        hidden_.assign(leaves_.size(), 0);
+        mark_hidden(root(), false);
+    }
+    void mark_hidden(std::uint32_t node, bool hidden) {
+        const Node& n = nodes_[node];
+        if (n.op == CsgOp::leaf) {
+            hidden_[n.first] = hidden;
+            return;
+        }
+        for (std::uint32_t k = 0; k < n.count; ++k)
+            mark_hidden(children_[n.first + k], hidden || (n.op == CsgOp::clip && k > 0));
+    }
 
     template <class F> auto with_states(F&& f) const {
         if (leaves_.size() <= inline_leaves) {
@@ -280,14 +309,22 @@ private:
                 if (walks[i].found && walks[i].next.t <= together)
                     inside[i] = glm::dot(walks[i].next.normal, ray.direction) < S(0);
             const bool now_inside = member(root(), inside.data());
-            if (now_inside != was_inside) {
-                if (!(first.t > S(0)) || !(first.t < ray.t_max)) return std::nullopt;
-                Hit<S> hit = first;
+            // The surface that shows here: the nearest crossing of a leaf that is not a clip's.
+            std::size_t shown = walks.size();
+            for (std::size_t i = 0; i < walks.size(); ++i)
+                if (walks[i].found && walks[i].next.t <= together && !hidden_[i] &&
+                    (shown == walks.size() || walks[i].next.t < walks[shown].next.t))
+                    shown = i;
+            if (now_inside != was_inside && shown != walks.size()) {
+                const Hit<S>& crossing = walks[shown].next;
+                if (!(crossing.t > S(0)) || !(crossing.t < ray.t_max)) return std::nullopt;
+                Hit<S> hit = crossing;
                 const bool faces_ray = glm::dot(hit.normal, ray.direction) < S(0);
                 if (faces_ray != now_inside) hit.normal = -hit.normal;  // out of the result's volume
-                hit.part = std::uint32_t(nearest);
+                hit.part = std::uint32_t(shown);
                 return hit;
             }
+            if (!(first.t < ray.t_max)) return std::nullopt;
             was_inside = now_inside;
             for (std::size_t i = 0; i < walks.size(); ++i)
                 if (walks[i].found && walks[i].next.t <= together) step_past(i, walks[i], ray, inv_speed2);
@@ -298,6 +335,7 @@ private:
     std::vector<Leaf> leaves_;
     std::vector<Node> nodes_;                ///< children before parents; the root is last
     std::vector<std::uint32_t> children_;  ///< node indices of each operation's children
+    std::vector<std::uint8_t> hidden_;     ///< per leaf: 1 when it only clips (never a hit)
     BBox<S> bounds_;
 };
 

@@ -41,6 +41,7 @@ template <Scalar S, class... L> struct is_csg<Csg<S, L...>> : std::true_type {};
     case CsgOp::merge: return "merge";
     case CsgOp::intersection: return "intersection";
     case CsgOp::difference: return "difference";
+    case CsgOp::clip: return "clipped object";
     }
     return "csg";
 }

@@ -416,6 +416,17 @@ struct Object {
     /// texture when this top-level statement ended (POV-Ray's rule).
     std::optional<Texture> default_texture;
     std::map<std::string, SourceLocation> ignored;  ///< modifiers photon does not use (no_image, ...)
+    /// POV-Ray's `clipped_by`: only the parts of this object's surface inside every one of these
+    /// show. Each is placed in this object's space (its transform holds the inverse of the
+    /// object's transformations written before `clipped_by`, so that the object's transform
+    /// moves it as POV-Ray moves the clip: by the transformations written after).
+    std::vector<std::shared_ptr<const Object>> clipped_by;
+    SourceLocation clipped_at;  ///< where `clipped_by` was written
+    /// POV-Ray's `bounded_by`, placed as clipped_by (kept for `clipped_by { bounded_by }`).
+    std::vector<std::shared_ptr<const Object>> bounded_by;
+    /// Where a `bounded_by` was written that photon could not show to hold the whole object:
+    /// the builder warns where POV-Ray keeps such a bound (see pov_keeps_bound).
+    std::optional<SourceLocation> bound_may_cut;
     SourceLocation at;
 };
 
@@ -434,6 +445,19 @@ struct Object {
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);
     return names[s.index()];
+}
+
+/// Whether POV-Ray 3.7 keeps a `bounded_by` on a top-level object of this shape. With its
+/// default Remove_Bounds=on, Parser::Link_To_Frame removes the bound ("Unnecessary bounding
+/// object removed") from everything but unions, intersections, differences, merges, polynomial
+/// surfaces, text and quadrics (those without automatic bounds; photon counts them all as kept).
+/// A removed bound changes nothing, in POV-Ray as in photon. Inside a CSG every bound is kept.
+[[nodiscard]] inline bool pov_keeps_bound(const Shape& shape) {
+    if (const auto* skipped = std::get_if<SkippedShape>(&shape))
+        return skipped->keyword == "poly" || skipped->keyword == "cubic" || skipped->keyword == "quartic" ||
+               skipped->keyword == "polynomial";
+    return std::holds_alternative<UnionShape>(shape) || std::holds_alternative<CsgShape>(shape) ||
+           std::holds_alternative<TextShape>(shape) || std::holds_alternative<QuadricShape>(shape);
 }
 
 /// A camera as written; build.hpp resolves it in POV-Ray's order (see resolve_camera).

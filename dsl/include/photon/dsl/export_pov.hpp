@@ -375,6 +375,17 @@ private:
         if (o.inverse) indent(level), out_ << "inverse\n";
         if (o.hollow) indent(level), out_ << "hollow " << on_off(*o.hollow) << '\n';
         for (const auto& [name, at] : o.ignored) indent(level), out_ << name << '\n';
+        // Written after the object's matrix: each in the world, where the object's transform put it.
+        for (const auto& [word, list] : {std::pair{"bounded_by", &o.bounded_by}, {"clipped_by", &o.clipped_by}}) {
+            if (list->empty()) continue;
+            indent(level), out_ << word << " {\n";
+            for (const auto& c : *list) {
+                Object placed = *c;
+                placed.transform = c->transform.then(o.transform);
+                object(placed, level + 1);
+            }
+            indent(level), out_ << "}\n";
+        }
     }
 
     void object(const Object& o, int level) {

@@ -4,7 +4,8 @@
 // inherited, each shape placed by its transformation (kept as the library's own shape where the
 // transformation allows, wrapped in Transformed otherwise), materials shared between equal textures.
 // A CSG (difference, intersection, merge) becomes one DefaultCsg object whose leaves are its solid
-// children, each leaf with the material of its own texture (or the one it inherits).
+// children, each leaf with the material of its own texture (or the one it inherits). An object
+// with `clipped_by` (its own or its unions') becomes a DefaultCsg clipped by the clip objects.
 
 #include <algorithm>
 #include <functional>
@@ -102,6 +103,12 @@ public:
     [[nodiscard]] const std::vector<SourceLocation>& object_locations() const noexcept { return object_at_; }
 
 private:
+    struct Inherited;
+    /// A `clipped_by` object and the space it was written in (the clipped object's).
+    struct ClipRef {
+        const Object* clip;
+        std::shared_ptr<const Inherited> space;
+    };
     struct Inherited {
         const Texture* texture = nullptr;
         const Interior* interior = nullptr;
@@ -111,6 +118,11 @@ private:
         Transform texture_placement;  ///< the texture's pattern space to the world
         Transform normal_placement;   ///< its normal's pattern space to the world
         Transform texture_world;      ///< the space the texture was written in to the world (for its layers)
+        /// The clips of the unions around (set by add(): a CSG's children take none from them).
+        std::vector<ClipRef> clips;
+        /// POV-Ray keeps the bounds of the objects here: inside a CSG, or in a union it does not
+        /// split into its objects (one with a bound or a clip of its own; Parser::Link_To_Frame).
+        bool bounds_kept = false;
     };
 
     static Inherited inherit(const Object& o, const Inherited& parent) {
@@ -131,17 +143,21 @@ private:
         const Transform texture_world = o.texture ? parent.transform : parent.texture ? parent.texture_world : Transform{};
         return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                 o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                o.transform.then(parent.transform), placement, normal_placement, texture_world};
+                o.transform.then(parent.transform), placement, normal_placement, texture_world, {}, false};
     }
 
     void add(const Object& o, const Inherited& parent) {
-        const Inherited mine = inherit(o, parent);
+        Inherited mine = inherit(o, parent);
         if (const auto* l = std::get_if<LightSource>(&o.shape))
             return add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
+        if (parent.bounds_kept || pov_keeps_bound(o.shape)) warn_bound(o);
+        mine.clips = parent.clips;
+        append_clips(o, mine);
         if (const auto* u = std::get_if<UnionShape>(&o.shape)) {
             if (o.inverse)
                 warn_(o.at, "`inverse` on a `union` is ignored: photon adds a union's objects one by one",
                       "ignored effect", "inverse");
+            mine.bounds_kept = parent.bounds_kept || !o.bounded_by.empty() || !o.clipped_by.empty();
             for (const auto& child : u->children) add(*child, mine);
             return;
         }
@@ -150,6 +166,13 @@ private:
             return;
         }
         if (std::holds_alternative<CsgShape>(o.shape)) return add_csg(o, mine);
+        if (!mine.clips.empty()) {
+            if (std::visit([](const auto& s) { return is_solid_shape(s); }, o.shape)) return add_csg(o, mine);
+            warn_(o.clipped_at.known() ? o.clipped_at : o.at,
+                  std::string("`clipped_by` on a `") + keyword(o.shape) +
+                      "` is ignored: it has no inside, and photon clips only through CSG",
+                  "ignored effect", "clipped_by");
+        }
         if (o.inverse) {
             if (std::visit([](const auto& s) { return is_solid_shape(s); }, o.shape)) return add_csg(o, mine);
             warn_(o.at, std::string("`inverse` on a `") + keyword(o.shape) + "` is ignored: it has no inside",
@@ -192,6 +215,7 @@ private:
             std::vector<MaterialId> parts;
             std::optional<DefaultCsg<S>> tree = csg_node(o, mine, parts);
             if (!tree) return;
+            tree = clipped(std::move(*tree), mine.clips, parts);
             if (tree->bounds().is_empty())
                 warn_(o.at, std::string("this `") + keyword(o.shape) + "` is empty (its objects do not overlap): nothing renders");
             const MaterialId material = material_for(mine, o);
@@ -231,8 +255,11 @@ private:
                 continue;
             }
             if (std::holds_alternative<SkippedShape>(child.shape)) ++skipped_;  // the parser warned
+            warn_bound(child);  // POV-Ray keeps every bound inside a CSG
             if (auto tree = csg_node(child, theirs, parts)) {
-                children.push_back(std::move(*tree));
+                Inherited space = theirs;
+                append_clips(child, space);
+                children.push_back(clipped(std::move(*tree), space.clips, parts));
                 continue;
             }
             // A child with no inside: what it takes from the result cannot be known, except in a
@@ -271,6 +298,39 @@ private:
         case Op::merge: break;
         }
         return DefaultCsg<S>::merge(std::move(children));
+    }
+
+    /// Adds o's own `clipped_by` objects to `mine.clips`, in o's space.
+    static void append_clips(const Object& o, Inherited& mine) {
+        if (o.clipped_by.empty()) return;
+        auto space = std::make_shared<Inherited>(mine);
+        space->clips.clear();
+        for (const auto& clip : o.clipped_by) mine.clips.push_back({clip.get(), space});
+    }
+
+    /// `tree` clipped by `clips` (their leaves' materials appended to `parts`, never shown); a
+    /// clip with no inside is left out, with a warning.
+    DefaultCsg<S> clipped(DefaultCsg<S> tree, const std::vector<ClipRef>& clips, std::vector<MaterialId>& parts) {
+        std::vector<DefaultCsg<S>> trees;
+        for (const ClipRef& c : clips) {
+            if (auto t = csg_node(*c.clip, inherit(*c.clip, *c.space), parts))
+                trees.push_back(std::move(*t));
+            else if (!std::holds_alternative<SkippedShape>(c.clip->shape))  // a skipped one was warned
+                warn_(c.clip->at, std::string("this `") + keyword(c.clip->shape) +
+                                      "` has no inside: photon's `clipped_by` leaves it out",
+                      "ignored effect", "clipped_by");
+        }
+        return trees.empty() ? tree : DefaultCsg<S>::clipped(std::move(tree), std::move(trees));
+    }
+
+    /// The `bounded_by` of `o` that photon could not show to hold it, where POV-Ray keeps it.
+    void warn_bound(const Object& o) {
+        if (o.bound_may_cut)
+            warn_(*o.bound_may_cut,
+                  "`bounded_by` is ignored: photon bounds every object itself; the image is the same unless the "
+                  "bound cuts the object (POV-Ray then hides it from the rays that miss the bound), which photon "
+                  "could not rule out here",
+                  "ignored effect", "bounded_by");
     }
 
     std::optional<DefaultCsg<S>> csg_leaf(const SphereShape& s, const Transform& t) {

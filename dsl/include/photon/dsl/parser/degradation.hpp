@@ -50,12 +50,15 @@ inline bool Parser::is_object_keyword(std::string_view w) const {
 }
 
 // BOUNDED_BY: bounded_by { OBJECT {OBJECT} | clipped_by }   CLIPPED_BY: clipped_by { OBJECT {OBJECT} | bounded_by }
-// `obj`: the object so far (the bound is written in its space at this point; later
-// transformations move both).
-inline void Parser::parse_bound_or_clip(const Token& kw, const Object& obj) {
+// Both keep their objects in `obj`'s space at this point (later transformations move them with
+// it). A clip is exact (the builder intersects the object with it, surfaces of the clip hidden);
+// a bound changes the image only where POV-Ray keeps it and it cuts the object, which the
+// builder judges (it knows where the object ends up).
+inline void Parser::parse_bound_or_clip(const Token& kw, Object& obj) {
     const Nest nest(*this, kw.location);
     open_block(kw);
-    const char* other = kw.text == "bounded_by" ? "clipped_by" : "bounded_by";
+    const bool bound = kw.text == "bounded_by";
+    const char* other = bound ? "clipped_by" : "bounded_by";
     bool other_named = false;
     std::vector<Object> objects;
     if (peek().is_identifier(other)) {
@@ -65,17 +68,29 @@ inline void Parser::parse_bound_or_clip(const Token& kw, const Object& obj) {
         while (peek().kind == TokenKind::identifier && is_object_keyword(peek().text)) objects.push_back(parse_object(next()));
     }
     close_block(kw, std::string("an object or `") + other + "`");
-    if (kw.text == "bounded_by") {
-        // POV-Ray only skips the rays that miss the bound: a bound that holds the whole object
-        // changes nothing (`bounded_by { clipped_by }` bounds by the clip, which clips anyway).
+    // Judged as written: the object and its bound in the same space, before either moves on.
+    const bool holds = bound && !other_named && bound_contains(obj, objects);
+    const Transform to_object = obj.transform.inverse();
+    std::vector<std::shared_ptr<const Object>> placed;
+    for (Object& o : objects) {
+        o.transform = o.transform.then(to_object);
+        placed.push_back(std::make_shared<const Object>(std::move(o)));
+    }
+    if (bound) {
+        // `bounded_by { clipped_by }` bounds by the clip, which clips anyway: nothing to judge.
         if (other_named) return;
-        if (bound_contains(obj, objects)) return;
-        degrade(kw.location, degraded::ignored_effect, kw.text,
-                "`bounded_by` is ignored: photon bounds every object itself; the image is the same unless the bound "
-                "cuts the object (POV-Ray then clips the object to it), which photon could not rule out here");
-    } else
-        degrade(kw.location, degraded::ignored_effect, kw.text,
-                "`clipped_by` is ignored: photon renders the whole object, unclipped");
+        if (!holds) obj.bound_may_cut = kw.location;
+        obj.bounded_by = std::move(placed);
+        return;
+    }
+    if (other_named) {
+        if (obj.bounded_by.empty())
+            fail(kw.location, "`clipped_by { bounded_by }` needs a `bounded_by` written before it");
+        placed = obj.bounded_by;
+        obj.bound_may_cut.reset();  // the bound is the clip now: it cuts nothing the clip keeps
+    }
+    obj.clipped_by.insert(obj.clipped_by.end(), placed.begin(), placed.end());
+    obj.clipped_at = kw.location;
 }
 
 /// What photon does instead of the effect `keyword` (fog, rainbow, media).

@@ -328,7 +328,7 @@ private:
                  const std::string& message);
     Object parse_skipped_object(const Token& kw);
     bool is_object_keyword(std::string_view w) const;
-    void parse_bound_or_clip(const Token& kw, const Object& obj);
+    void parse_bound_or_clip(const Token& kw, Object& obj);
     bool bound_contains(const Object& obj, const std::vector<Object>& bounds) const;
     void skip_effect(const Token& kw);
     // sky.hpp
