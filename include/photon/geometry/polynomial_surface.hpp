@@ -32,6 +32,15 @@ namespace photon {
     return (n + 1) * (n + 2) * (n + 3) / 6;
 }
 
+/// The index of x^i y^j z^k (i + j + k <= order) in POV-Ray's order (Poly::Set_Coeff): the
+/// terms with a higher power of x come first, then those with a higher power of y, then of z.
+[[nodiscard]] constexpr std::size_t polynomial_term_index(int order, int i, int j, int k) noexcept {
+    std::size_t index = 0;
+    for (int a = order; a > i; --a) index += std::size_t(order - a + 1) * std::size_t(order - a + 2) / 2;
+    for (int b = order - i; b > j; --b) index += std::size_t(order - i - b + 1);
+    return index + std::size_t(order - i - j - k);
+}
+
 /// One term c x^i y^j z^k.
 struct PolynomialTerm {
     int i = 0, j = 0, k = 0;

@@ -51,8 +51,8 @@ inline bool Parser::is_object_keyword(std::string_view w) const {
 
 // BOUNDED_BY: bounded_by { OBJECT {OBJECT} | clipped_by }   CLIPPED_BY: clipped_by { OBJECT {OBJECT} | bounded_by }
 // `obj`: the object so far (the bound is written in its space at this point; later
-// transformations move both).
-inline void Parser::parse_bound_or_clip(const Token& kw, const Object& obj) {
+// transformations move both). A polynomial surface keeps a sphere or box bound as its gate.
+inline void Parser::parse_bound_or_clip(const Token& kw, Object& obj) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     const char* other = kw.text == "bounded_by" ? "clipped_by" : "bounded_by";
@@ -70,6 +70,7 @@ inline void Parser::parse_bound_or_clip(const Token& kw, const Object& obj) {
         // changes nothing (`bounded_by { clipped_by }` bounds by the clip, which clips anyway).
         if (other_named) return;
         if (bound_contains(obj, objects)) return;
+        if (parse_polynomial_gate(obj, objects)) return;  // rendered as POV-Ray renders it
         degrade(kw.location, degraded::ignored_effect, kw.text,
                 "`bounded_by` is ignored: photon bounds every object itself; the image is the same unless the bound "
                 "cuts the object (POV-Ray then clips the object to it), which photon could not rule out here");

@@ -322,13 +322,15 @@ private:
     // prism.hpp
     void parse_prism(Object& obj);
     void parse_text(Object& obj);
+    void parse_polynomial(const Token& kw, Object& obj);
+    bool parse_polynomial_gate(Object& obj, const std::vector<Object>& bounds);
 
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
                  const std::string& message);
     Object parse_skipped_object(const Token& kw);
     bool is_object_keyword(std::string_view w) const;
-    void parse_bound_or_clip(const Token& kw, const Object& obj);
+    void parse_bound_or_clip(const Token& kw, Object& obj);
     bool bound_contains(const Object& obj, const std::vector<Object>& bounds) const;
     void skip_effect(const Token& kw);
     // sky.hpp
