@@ -152,3 +152,25 @@ TEST_CASE("polynomial: bounded_by as POV-Ray's gate; inside(); export-pov", "[ds
     const std::string twice = dsl::export_pov(dsl::parse_string(exported, "exported.pov"));
     CHECK(twice.substr(twice.find('\n')) == exported.substr(exported.find('\n')));
 }
+
+TEST_CASE("examples/scenes/polynomials.pov reads and builds with no warning", "[dsl][polynomial][scenes]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    po.include_paths = dsl::standard_include_paths();
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto built = dsl::build<float>(dsl::parse_file(std::string(PHOTON_SCENES_DIR) + "/polynomials.pov", po), bo);
+    CHECK(all_messages(warnings).empty());
+    int surfaces = 0, gated = 0, csg = 0;
+    for (const auto& o : built.scene.objects()) {
+        if (const auto* p = std::get_if<Transformed<PolynomialSurface<float>>>(&o.shape)) {
+            ++surfaces;
+            gated += p->shape().gate().has_value();
+        }
+        csg += std::holds_alternative<DefaultCsg<float>>(o.shape);
+    }
+    CHECK(surfaces == 3);  // the torus, the piriform and the rounded cube
+    CHECK(gated == 1);     // the piriform's bounded_by sphere
+    CHECK(csg == 1);       // the saddle cut by a box
+}
