@@ -418,9 +418,9 @@ private:
             out_ << "poly { " << py->order << ", <";
             for (std::size_t n = 0; n < py->coefficients->size(); ++n) out_ << (n ? ", " : "") << num((*py->coefficients)[n]);
             out_ << ">";
-            if (const auto& g = py->gate)
-                out_ << (g->sphere ? " bounded_by { sphere { " + vec(g->center) + ", " + num(g->radius) + " } }"
-                                   : " bounded_by { box { " + vec(g->min) + ", " + vec(g->max) + " } }");
+            if (const auto& gate = py->gate)
+                out_ << (gate->sphere ? " bounded_by { sphere { " + vec(gate->center) + ", " + num(gate->radius) + " } }"
+                                      : " bounded_by { box { " + vec(gate->min) + ", " + vec(gate->max) + " } }");
             out_ << '\n';
         } else if (const auto* x = std::get_if<TextShape>(&o.shape)) {
             out_ << "text { ttf " << quoted(x->font.path.string()) << ' ' << quoted(x->text) << ' ' << num(x->thickness) << ", "
