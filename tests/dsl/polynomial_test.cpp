@@ -105,7 +105,7 @@ TEST_CASE("polynomial: quartic, cubic, poly and polynomial build exact surfaces"
     CHECK(h->normal.x == Approx(1));
 }
 
-TEST_CASE("polynomial: orders, counts and powers as located errors; no terms skipped", "[dsl][polynomial][errors]") {
+TEST_CASE("polynomial: orders, counts and powers as located errors, and no terms skipped", "[dsl][polynomial][errors]") {
     CHECK_THAT(error_of("quartic { <1, 2, 3> }"), Contains("1:19: the quartic of order 4 needs 35 coefficients, found 3"));
     CHECK_THAT(error_of("poly { 36, <1> }"), Contains("1:8: the order of `poly` must be 2 to 35"));
     CHECK_THAT(error_of("poly { 1, <1, 2, 3, 4> }"), Contains("1:8: the order of `poly` must be 2 to 35"));
@@ -116,7 +116,7 @@ TEST_CASE("polynomial: orders, counts and powers as located errors; no terms ski
     CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:17 polynomial"});
 }
 
-TEST_CASE("polynomial: bounded_by as POV-Ray's gate; inside(); export-pov", "[dsl][polynomial][export]") {
+TEST_CASE("polynomial: bounded_by as POV-Ray's gate, inside() and export-pov", "[dsl][polynomial][export]") {
     // The paraboloid y = x^2 + z^2 (poly order 2: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1).
     const std::string para = "poly { 2, <1, 0, 0, 0, 0, 0, -1, 1, 0, 0> ";
     const StagedScene open = build_staged(para + "}\n");

@@ -87,11 +87,11 @@ template <class S> Vec3<S> poly_uniform3(Pcg32& rng) {
     return {a.x, a.y, rng.uniform<S>()};
 }
 
-/// The first sign change of p along the ray in (0, t_end], by 20000 samples refined by bisection
+/// The first sign change of p along the ray in (0, t_end], by 4000 samples refined by bisection
 /// (the samples' spacing hides roots closer together than it: callers skip such rays).
 std::optional<double> poly_sampled_root(const PolyTerms& p, glm::dvec3 o, glm::dvec3 d, double t_end,
                                         bool* close_pair = nullptr) {
-    constexpr int n = 20000;
+    constexpr int n = 4000;
     double prev_t = 1e-9 * t_end, prev = poly_eval(p, o + prev_t * d);
     std::optional<double> found;
     for (int i = 1; i <= n; ++i) {
@@ -187,7 +187,7 @@ TEMPLATE_TEST_CASE("polynomial: a sphere as a quadratic and as a quartic is the 
     }
 }
 
-TEMPLATE_TEST_CASE("polynomial: a torus as a quartic is the Torus, for many rays at 1e-3, 1, 1e3", "[geometry][polynomial]",
+TEMPLATE_TEST_CASE("polynomial: a torus as a quartic is the Torus, for many rays at 1e-3, 1, 1e3", "[geometry][polynomial][heavy]",
                    float, double) {
     using S = TestType;
     for (const double scale : {1e-3, 1.0, 1e3}) {
@@ -220,7 +220,7 @@ TEMPLATE_TEST_CASE("polynomial: a torus as a quartic is the Torus, for many rays
     }
 }
 
-TEST_CASE("polynomial: a cubic and surfaces of order 5 and 6 agree with roots found by sampling", "[geometry][polynomial]") {
+TEST_CASE("polynomial: a cubic and surfaces of order 5 and 6 agree with roots found by sampling", "[geometry][polynomial][heavy]") {
     // Monkey saddle z = x^3 - 3 x y^2, a cubic; a sphere times a torus (order 6, a sphere in the
     // torus's hole); an order-5 surface: the cubic times a sphere.
     const PolyTerms saddle = poly_add(poly_add(poly_mul(poly_mul(poly_x, poly_x), poly_x),
