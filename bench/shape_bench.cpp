@@ -9,15 +9,19 @@
 
 #include <photon/geometry/cylinder.hpp>
 #include <photon/geometry/polygon.hpp>
+#include <photon/geometry/polynomial_surface.hpp>
 #include <photon/geometry/prism.hpp>
 #include <photon/geometry/quadric.hpp>
 #include <photon/geometry/sphere.hpp>
+#include <photon/geometry/torus.hpp>
 #include <photon/geometry/triangle.hpp>
 #include <photon/math/rng.hpp>
 #include <photon/math/sampling.hpp>
 #include <photon/scene/scene.hpp>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace {
@@ -124,6 +128,35 @@ template <class S> void prism_text_row(benchmark::State& s) {  // 24 "glyphs" of
     run(s, Prism<S>(Outline(contours), S(-0.1), S(0.1)));
 }
 
+/// Polynomials in x, y, z as powers -> coefficient, for the polynomial rows.
+using BenchPoly = std::map<std::array<int, 3>, double>;
+BenchPoly bench_mul(const BenchPoly& a, const BenchPoly& b) {
+    BenchPoly out;
+    for (const auto& [ma, ca] : a)
+        for (const auto& [mb, cb] : b) out[{ma[0] + mb[0], ma[1] + mb[1], ma[2] + mb[2]}] += ca * cb;
+    return out;
+}
+/// (|q|^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + z^2), shapesq.inc's way of writing a torus.
+BenchPoly bench_torus(double major, double minor) {
+    const BenchPoly m{{{2, 0, 0}, 1}, {{0, 2, 0}, 1}, {{0, 0, 2}, 1}, {{0, 0, 0}, major * major - minor * minor}};
+    BenchPoly p = bench_mul(m, m);
+    p[{2, 0, 0}] -= 4 * major * major, p[{0, 0, 2}] -= 4 * major * major;
+    return p;
+}
+template <class S> PolynomialSurface<S> bench_surface(const BenchPoly& p, int order) {
+    std::vector<double> c(polynomial_term_count(order), 0.0);
+    for (const auto& [m, v] : p) c[polynomial_term_index(order, m[0], m[1], m[2])] = v;
+    return PolynomialSurface<S>(order, c);
+}
+template <class S> void torus(benchmark::State& s) { run(s, Torus<S>(S(0.7), S(0.3))); }
+template <class S> void poly_torus(benchmark::State& s) {  // the same torus as a quartic
+    run(s, bench_surface<S>(bench_torus(0.7, 0.3), 4));
+}
+template <class S> void poly_sextic(benchmark::State& s) {  // a sphere in a torus's hole, as one order-6 surface
+    const BenchPoly sphere{{{2, 0, 0}, 1}, {{0, 2, 0}, 1}, {{0, 0, 2}, 1}, {{0, 0, 0}, -0.09}};
+    run(s, bench_surface<S>(bench_mul(sphere, bench_torus(0.7, 0.3)), 6));
+}
+
 }  // namespace
 
 #define PHOTON_SHAPE_BENCH(f) BENCHMARK_TEMPLATE(f, float); BENCHMARK_TEMPLATE(f, double)
@@ -141,5 +174,8 @@ PHOTON_SHAPE_BENCH(prism_square);
 PHOTON_SHAPE_BENCH(prism_curved);
 PHOTON_SHAPE_BENCH(prism_conic);
 PHOTON_SHAPE_BENCH(prism_text_row);
+PHOTON_SHAPE_BENCH(torus);
+PHOTON_SHAPE_BENCH(poly_torus);
+PHOTON_SHAPE_BENCH(poly_sextic);
 
 BENCHMARK_MAIN();

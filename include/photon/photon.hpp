@@ -25,6 +25,7 @@
 #include "geometry/offset.hpp"
 #include "geometry/plane.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/polynomial_surface.hpp"
 #include "geometry/primitive.hpp"
 #include "geometry/quadric.hpp"
 #include "geometry/ray.hpp"

@@ -9,6 +9,8 @@
 // itself. A root of even multiplicity (a tangent ray) shows no sign change and is found only when
 // the polynomial's value at the derivative's root is exactly 0: grazing is a miss, or a hit, but
 // never a wrong point.
+//
+// roots_up_to() does the same for a degree known only at run time (POV-Ray's poly, up to 35).
 
 #include <algorithm>
 #include <array>
@@ -81,6 +83,61 @@ template <std::size_t D> [[nodiscard]] Roots<D> roots_in(const std::array<double
         }
         return out;
     }
+}
+
+/// The highest degree roots_up_to() solves (POV-Ray's MAX_ORDER).
+inline constexpr std::size_t max_runtime_degree = 35;
+
+/// c[0] + c[1] x + ... + c[degree] x^degree by Horner's rule.
+[[nodiscard]] inline double evaluate(const double* c, std::size_t degree, double x) noexcept {
+    double v = c[degree];
+    for (std::size_t i = degree; i-- > 0;) v = v * x + c[i];
+    return v;
+}
+
+/// The real roots of c[0] + ... + c[degree] x^degree in [lo, hi], ascending, for 1 <= degree <=
+/// max_runtime_degree and c[degree] != 0: roots_in() with the degree a run-time value. The
+/// derivatives' roots are found level by level on the stack (about 600 bytes a level).
+[[nodiscard]] inline Roots<max_runtime_degree> roots_up_to(const double* c, std::size_t degree, double lo,
+                                                          double hi) noexcept {
+    Roots<max_runtime_degree> out;
+    if (degree == 1) {
+        if (c[1] != 0.0) {
+            const double x = -c[0] / c[1];
+            if (x >= lo && x <= hi) out.push(x);
+        }
+        return out;
+    }
+    std::array<double, max_runtime_degree> dc{};
+    for (std::size_t i = 1; i <= degree; ++i) dc[i - 1] = double(i) * c[i];
+    const Roots<max_runtime_degree> turning = roots_up_to(dc.data(), degree - 1, lo, hi);
+    double a = lo, p_a = evaluate(c, degree, lo);
+    if (p_a == 0.0) out.push(lo);
+    for (std::size_t i = 0; i <= turning.count; ++i) {
+        const double b = i < turning.count ? turning.value[i] : hi;
+        const double p_b = evaluate(c, degree, b);
+        if (p_b == 0.0) {
+            if (out.count == 0 || out.value[out.count - 1] != b) out.push(b);
+        } else if (p_a != 0.0 && (p_a < 0.0) != (p_b < 0.0)) {
+            // The root of the monotone piece [a, b]: Newton kept inside the bracket, as bracketed_root.
+            double l = a, h = b, x = 0.5 * (a + b);
+            for (int iteration = 0; iteration < 200; ++iteration) {
+                const double p = evaluate(c, degree, x);
+                if (p == 0.0) break;
+                if ((p < 0.0) == (p_a < 0.0)) l = x; else h = x;
+                const double slope = evaluate(dc.data(), degree - 1, x);
+                double next = slope != 0.0 ? x - p / slope : 0.5 * (l + h);
+                if (!(next > l && next < h)) next = 0.5 * (l + h);
+                const bool done = next == x || h - l <= 4.0 * std::numeric_limits<double>::epsilon() *
+                                                              std::max(std::abs(l), std::abs(h));
+                x = next;
+                if (done) break;
+            }
+            out.push(x);
+        }
+        a = b, p_a = p_b;
+    }
+    return out;
 }
 
 }  // namespace photon::detail

@@ -19,6 +19,7 @@
 #include "../geometry/disc.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/polygon.hpp"
+#include "../geometry/polynomial_surface.hpp"
 #include "../geometry/prism.hpp"
 #include "../geometry/quadric.hpp"
 #include "../geometry/sphere.hpp"
@@ -72,6 +73,7 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Quadric<S>>) return shape.bounds().is_finite() ? "ellipsoid quadric" : "quadric";
     else if constexpr (std::is_same_v<Shape, Polygon<S>>) return "polygon";
     else if constexpr (std::is_same_v<Shape, Prism<S>>) return "prism";
+    else if constexpr (std::is_same_v<Shape, PolynomialSurface<S>>) return "poly";
     else return "object";
 }
 

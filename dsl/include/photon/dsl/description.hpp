@@ -343,6 +343,23 @@ struct PrismShape {
     Sweep sweep = Sweep::linear;
     bool open = false;
 };
+/// `quartic { <35> }`, `cubic { <20> }`, `poly { N, <...> }`, `polynomial { N, xyz(i, j, k): c }`:
+/// p(x, y, z) = 0 of order 2 to 35, solid where p < 0, coefficients in POV-Ray's order (x's
+/// power descending, then y's, then z's: photon::polynomial_term_powers).
+struct PolynomialShape {
+    std::string keyword = "poly";  ///< as written
+    int order = 2;
+    std::shared_ptr<const std::vector<double>> coefficients;
+    /// A `bounded_by` sphere or box in the polynomial's own coordinates: POV-Ray tests each ray
+    /// against it first, and a ray that misses it misses the surface (also outside the bound).
+    struct Gate {
+        bool sphere = true;
+        Vector3 center{0.0};
+        double radius = 0;
+        Vector3 min{0.0}, max{0.0};
+    };
+    std::optional<Gate> gate;
+};
 /// A TrueType font named in a text object, found by the parser (beside the scene, then on the
 /// include path) and read by the build step (font_files.hpp), as mesh files are.
 struct FontFile {
@@ -394,7 +411,7 @@ struct SkippedShape {
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
                            SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape, QuadricShape,
-                           PolygonShape, PrismShape, TextShape>;
+                           PolygonShape, PrismShape, TextShape, PolynomialShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -440,10 +457,11 @@ struct Object {
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
                                      "light_source", "",    "",      "cylinder", "cone", "disc", "torus",
-                                     "quadric",      "polygon", "prism", "text"};
+                                     "quadric",      "polygon", "prism", "text", "poly"};
     static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);
+    if (const auto* poly = std::get_if<PolynomialShape>(&s)) return poly->keyword.c_str();
     return names[s.index()];
 }
 
@@ -457,7 +475,8 @@ struct Object {
         return skipped->keyword == "poly" || skipped->keyword == "cubic" || skipped->keyword == "quartic" ||
                skipped->keyword == "polynomial";
     return std::holds_alternative<UnionShape>(shape) || std::holds_alternative<CsgShape>(shape) ||
-           std::holds_alternative<TextShape>(shape) || std::holds_alternative<QuadricShape>(shape);
+           std::holds_alternative<TextShape>(shape) || std::holds_alternative<QuadricShape>(shape) ||
+           std::holds_alternative<PolynomialShape>(shape);
 }
 
 /// A camera as written; build.hpp resolves it in POV-Ray's order (see resolve_camera).

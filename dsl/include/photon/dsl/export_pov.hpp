@@ -423,6 +423,16 @@ private:
             out_ << '\n';
         } else if (const auto* pr = std::get_if<PrismShape>(&o.shape)) {
             write_prism(*pr);
+        } else if (const auto* py = std::get_if<PolynomialShape>(&o.shape)) {
+            // As `poly` whatever was written (the same terms in the same order); the gate before
+            // the transformations, in the polynomial's own coordinates, as it was read.
+            out_ << "poly { " << py->order << ", <";
+            for (std::size_t n = 0; n < py->coefficients->size(); ++n) out_ << (n ? ", " : "") << num((*py->coefficients)[n]);
+            out_ << ">";
+            if (const auto& gate = py->gate)
+                out_ << (gate->sphere ? " bounded_by { sphere { " + vec(gate->center) + ", " + num(gate->radius) + " } }"
+                                      : " bounded_by { box { " + vec(gate->min) + ", " + vec(gate->max) + " } }");
+            out_ << '\n';
         } else if (const auto* x = std::get_if<TextShape>(&o.shape)) {
             out_ << "text { ttf " << quoted(x->font.path.string()) << ' ' << quoted(x->text) << ' ' << num(x->thickness) << ", "
                  << vec(x->offset) << '\n';

@@ -357,6 +357,11 @@ private:
         place(g, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
     }
+    std::optional<DefaultCsg<S>> csg_leaf(const PolynomialShape& p, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(p, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
     std::optional<DefaultCsg<S>> csg_leaf(const TextShape& text, const Transform& t) {
         std::optional<DefaultCsg<S>> leaf;
         place(text, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
@@ -373,7 +378,8 @@ private:
     template <class Shape> static constexpr bool is_solid_shape(const Shape&) {
         return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape> ||
                std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape> ||
-               std::is_same_v<Shape, QuadricShape> || std::is_same_v<Shape, PrismShape> || std::is_same_v<Shape, TextShape>;
+               std::is_same_v<Shape, QuadricShape> || std::is_same_v<Shape, PrismShape> || std::is_same_v<Shape, TextShape> ||
+               std::is_same_v<Shape, PolynomialShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -431,6 +437,15 @@ private:
         }
         const auto sweep = g.sweep == PrismShape::Sweep::conic ? PrismSweep::conic : PrismSweep::linear;
         f(Transformed<Prism<S>>(Prism<S>(Outline(contours), S(g.height1), S(g.height2), sweep, g.open), to_affine<S>(t)));
+    }
+    /// A polynomial surface placed: always Transformed (its transformation is not folded into its
+    /// coefficients), with its bounded_by gate in its own coordinates.
+    template <class F> void place(const PolynomialShape& p, const Transform& t, F&& f) {
+        PolynomialSurface<S> surface(p.order, *p.coefficients);
+        if (const auto& g = p.gate)
+            surface = surface.gated({g->sphere ? PolynomialGate::Kind::sphere : PolynomialGate::Kind::box, g->center,
+                                     g->radius, g->min, g->max});
+        f(Transformed<PolynomialSurface<S>>(std::move(surface), to_affine<S>(t)));
     }
     /// Text placed: its glyphs' outlines (font_files.hpp) as one prism, turned to run from z = 0
     /// to z = thickness (y and z swapped: the outline's v is y). One prism for all glyphs fills
@@ -521,6 +536,9 @@ private:
     }
     void add_shape(const PrismShape& g, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(g, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    void add_shape(const PolynomialShape& p, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(p, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const TextShape& text, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(text, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });

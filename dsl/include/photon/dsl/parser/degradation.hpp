@@ -53,7 +53,8 @@ inline bool Parser::is_object_keyword(std::string_view w) const {
 // Both keep their objects in `obj`'s space at this point (later transformations move them with
 // it). A clip is exact (the builder intersects the object with it, surfaces of the clip hidden);
 // a bound changes the image only where POV-Ray keeps it and it cuts the object, which the
-// builder judges (it knows where the object ends up).
+// builder judges (it knows where the object ends up). A polynomial surface keeps a sphere or box
+// bound as its gate, exactly as POV-Ray renders it (parse_polynomial_gate).
 inline void Parser::parse_bound_or_clip(const Token& kw, Object& obj) {
     const Nest nest(*this, kw.location);
     open_block(kw);
@@ -69,7 +70,7 @@ inline void Parser::parse_bound_or_clip(const Token& kw, Object& obj) {
     }
     close_block(kw, std::string("an object or `") + other + "`");
     // Judged as written: the object and its bound in the same space, before either moves on.
-    const bool holds = bound && !other_named && bound_contains(obj, objects);
+    const bool holds = bound && !other_named && (bound_contains(obj, objects) || parse_polynomial_gate(obj, objects));
     const Transform to_object = obj.transform.inverse();
     std::vector<std::shared_ptr<const Object>> placed;
     for (Object& o : objects) {

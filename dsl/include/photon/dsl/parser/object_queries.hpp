@@ -5,6 +5,7 @@
 // and inside(), which the description answers for the solids photon has.
 
 #include <photon/geometry/outline.hpp>
+#include <photon/geometry/polynomial_surface.hpp>
 
 #include "parser_class.hpp"
 
@@ -113,6 +114,8 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                     for (const OutlineCurve& c : contour) contours.back().push_back({c.control, c.degree});
                 }
                 return Outline(contours).contains(q);
+            } else if constexpr (std::is_same_v<S, PolynomialShape>) {  // POV-Ray's Inside_Poly (the gate plays no part)
+                return PolynomialSurface<double>(s.order, *s.coefficients).value(p) < 1e-4;  // INSIDE_TOLERANCE
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

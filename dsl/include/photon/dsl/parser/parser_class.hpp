@@ -322,6 +322,8 @@ private:
     // prism.hpp
     void parse_prism(Object& obj);
     void parse_text(Object& obj);
+    void parse_polynomial(const Token& kw, Object& obj);
+    bool parse_polynomial_gate(Object& obj, const std::vector<Object>& bounds);
 
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
