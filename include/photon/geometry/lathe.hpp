@@ -45,12 +45,9 @@ public:
             Curve c;
             c.degree = g.degree;
             const auto& p = g.control;
-            for (int i = 0; i <= g.degree; ++i) {
-                const glm::dvec2 q = p[std::size_t(i)];
-                if (!std::isfinite(q.x) || !std::isfinite(q.y)) throw std::invalid_argument("lathe: points must be finite");
-                c.radius = std::max(c.radius, std::abs(q.x));
-                c.y_lo = std::min(c.y_lo, q.y), c.y_hi = std::max(c.y_hi, q.y);
-            }
+            for (int i = 0; i <= g.degree; ++i)
+                if (!std::isfinite(p[std::size_t(i)].x) || !std::isfinite(p[std::size_t(i)].y))
+                    throw std::invalid_argument("lathe: points must be finite");
             if (g.degree == 1) c.x = {p[0].x, p[1].x - p[0].x, 0, 0}, c.y = {p[0].y, p[1].y - p[0].y, 0, 0};
             for (int axis = 0; axis < 2; ++axis) {
                 std::array<double, 4>& k = axis == 0 ? c.x : c.y;
@@ -59,8 +56,18 @@ public:
                 if (g.degree == 3)
                     k = {v(0), 3.0 * (v(1) - v(0)), 3.0 * (v(0) - 2.0 * v(1) + v(2)), v(3) - v(0) + 3.0 * (v(1) - v(2))};
             }
-            // Cut at the turns of Y(w), so that a horizontal line meets each piece at most once.
+            // The curve's own extent (its ends and turns, not its control points: as POV-Ray's
+            // bounding cylinders, and tighter).
             const auto turns = detail::roots_in<2>({c.y[1], 2.0 * c.y[2], 3.0 * c.y[3]}, 0.0, 1.0);
+            const auto x_turns = detail::roots_in<2>({c.x[1], 2.0 * c.x[2], 3.0 * c.x[3]}, 0.0, 1.0);
+            const auto extend = [&](double w) {
+                c.radius = std::max(c.radius, std::abs(at(c.x, w)));
+                c.y_lo = std::min(c.y_lo, at(c.y, w)), c.y_hi = std::max(c.y_hi, at(c.y, w));
+            };
+            extend(0.0), extend(1.0);
+            for (std::size_t i = 0; i < turns.count; ++i) extend(turns.value[i]);
+            for (std::size_t i = 0; i < x_turns.count; ++i) extend(x_turns.value[i]);
+            // Cut at the turns of Y(w), so that a horizontal line meets each piece at most once.
             double w0 = 0.0;
             for (std::size_t i = 0; i <= turns.count; ++i) {
                 const double w1 = i < turns.count ? turns.value[i] : 1.0;
