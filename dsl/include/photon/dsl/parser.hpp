@@ -64,6 +64,7 @@ namespace photon::dsl {
 #include "parser/quadrics.hpp"
 #include "parser/quadric_polygon.hpp"
 #include "parser/prism.hpp"
+#include "parser/revolved.hpp"
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/sky.hpp"

@@ -4,7 +4,10 @@
 // min_extent() and max_extent() (the parser holds no geometry; ParseOptions::geometry answers),
 // and inside(), which the description answers for the solids photon has.
 
+#include <photon/geometry/lathe.hpp>
 #include <photon/geometry/outline.hpp>
+#include <photon/geometry/sor.hpp>
+#include <photon/geometry/superellipsoid.hpp>
 
 #include "parser_class.hpp"
 
@@ -113,6 +116,14 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                     for (const OutlineCurve& c : contour) contours.back().push_back({c.control, c.degree});
                 }
                 return Outline(contours).contains(q);
+            } else if constexpr (std::is_same_v<S, SuperellipsoidShape>) {
+                return Superellipsoid<double>(s.e, s.n).contains(p);
+            } else if constexpr (std::is_same_v<S, LatheShape>) {  // POV-Ray's crossing parity
+                std::vector<OutlineSegment> profile;
+                for (const OutlineCurve& c : *s.profile) profile.push_back({c.control, c.degree});
+                return Lathe<double>(profile).contains(p);
+            } else if constexpr (std::is_same_v<S, SorShape>) {  // the closed solid, also when open (POV-Ray)
+                return Sor<double>(*s.points).contains(p);
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

@@ -322,6 +322,10 @@ private:
     // prism.hpp
     void parse_prism(Object& obj);
     void parse_text(Object& obj);
+    // revolved.hpp
+    void parse_superellipsoid(Object& obj);
+    void parse_lathe(Object& obj);
+    void parse_sor(Object& obj);
 
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
