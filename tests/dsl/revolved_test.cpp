@@ -123,3 +123,24 @@ TEST_CASE("lathe, sor and superellipsoid: export-pov writes what reads back the 
     const std::string twice = dsl::export_pov(dsl::parse_string(exported, "exported.pov"));
     CHECK(twice.substr(twice.find('\n')) == exported.substr(exported.find('\n')));
 }
+
+TEST_CASE("examples/scenes/revolved.pov reads and builds with no warning", "[dsl][revolved][scenes]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto built = dsl::build<float>(dsl::parse_file(std::string(PHOTON_SCENES_DIR) + "/revolved.pov", po), bo);
+    CHECK(all_messages(warnings).empty());
+    int supers = 0, lathes = 0, sors = 0, csg = 0;
+    for (const auto& o : built.scene.objects()) {
+        supers += std::holds_alternative<Transformed<Superellipsoid<float>>>(o.shape);
+        lathes += std::holds_alternative<Transformed<Lathe<float>>>(o.shape);
+        sors += std::holds_alternative<Transformed<Sor<float>>>(o.shape);
+        csg += std::holds_alternative<DefaultCsg<float>>(o.shape);
+    }
+    CHECK(supers == 3);
+    CHECK(lathes == 2);
+    CHECK(sors == 1);
+    CHECK(csg == 1);  // the cup cut into the block
+}
