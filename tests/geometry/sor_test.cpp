@@ -86,7 +86,7 @@ TEMPLATE_TEST_CASE("sor: a cylinder and a cone from their points, at several sca
     }
 }
 
-TEMPLATE_TEST_CASE("sor: a curved sor's hits lie on its cubics; open and closed; rays from the surface",
+TEMPLATE_TEST_CASE("sor: a curved sor's hits lie on its cubics, open and closed, rays from the surface",
                    "[geometry][sor]", float, double) {
     using S = TestType;
     const std::vector<glm::dvec2> points{{0, -0.5}, {0.6, 0}, {1.1, 0.5}, {0.4, 1.2}, {0.7, 1.8}, {0.9, 2.2}};
