@@ -8,12 +8,15 @@
 #include <benchmark/benchmark.h>
 
 #include <photon/geometry/cylinder.hpp>
+#include <photon/geometry/lathe.hpp>
 #include <photon/geometry/polygon.hpp>
 #include <photon/geometry/polynomial_surface.hpp>
 #include <photon/geometry/prism.hpp>
 #include <photon/geometry/quadric.hpp>
+#include <photon/geometry/sor.hpp>
 #include <photon/geometry/sphere.hpp>
 #include <photon/geometry/torus.hpp>
+#include <photon/geometry/superellipsoid.hpp>
 #include <photon/geometry/triangle.hpp>
 #include <photon/math/rng.hpp>
 #include <photon/math/sampling.hpp>
@@ -156,6 +159,20 @@ template <class S> void poly_sextic(benchmark::State& s) {  // a sphere in a tor
     const BenchPoly sphere{{{2, 0, 0}, 1}, {{0, 2, 0}, 1}, {{0, 0, 2}, 1}, {{0, 0, 0}, -0.09}};
     run(s, bench_surface<S>(bench_mul(sphere, bench_torus(0.7, 0.3)), 6));
 }
+template <class S> void superellipsoid_round(benchmark::State& s) { run(s, Superellipsoid<S>(1, 1)); }  // the sphere
+template <class S> void superellipsoid_box(benchmark::State& s) { run(s, Superellipsoid<S>(S(0.2), S(0.2))); }
+template <class S> void superellipsoid_star(benchmark::State& s) { run(s, Superellipsoid<S>(S(2.5), S(2.5))); }
+template <class S> void lathe_cylinder(benchmark::State& s) {  // a closed cylinder of 3 lines
+    run(s, Lathe<S>({OutlineSegment::line({0, -1}, {1, -1}), OutlineSegment::line({1, -1}, {1, 1}),
+                     OutlineSegment::line({1, 1}, {0, 1})}));
+}
+template <class S> void lathe_vase(benchmark::State& s) {  // two cubic Beziers
+    run(s, Lathe<S>({OutlineSegment::cubic({0, -1}, {0.9, -1}, {1.1, -0.3}, {0.6, 0.1}),
+                     OutlineSegment::cubic({0.6, 0.1}, {0.3, 0.4}, {0.3, 0.8}, {0.5, 1})}));
+}
+template <class S> void sor_vase(benchmark::State& s) {  // 4 cubic segments, closed
+    run(s, Sor<S>({{0.2, -1.2}, {0.8, -1}, {1, -0.5}, {0.5, 0}, {0.4, 0.5}, {0.6, 1}, {0.7, 1.2}}));
+}
 
 }  // namespace
 
@@ -177,5 +194,11 @@ PHOTON_SHAPE_BENCH(prism_text_row);
 PHOTON_SHAPE_BENCH(torus);
 PHOTON_SHAPE_BENCH(poly_torus);
 PHOTON_SHAPE_BENCH(poly_sextic);
+PHOTON_SHAPE_BENCH(superellipsoid_round);
+PHOTON_SHAPE_BENCH(superellipsoid_box);
+PHOTON_SHAPE_BENCH(superellipsoid_star);
+PHOTON_SHAPE_BENCH(lathe_cylinder);
+PHOTON_SHAPE_BENCH(lathe_vase);
+PHOTON_SHAPE_BENCH(sor_vase);
 
 BENCHMARK_MAIN();

@@ -104,10 +104,10 @@ grep -q "warn.pov:2:24: warning: \`normal { quilted }\` is ignored" "$work/err" 
 expect 1 "$photon" check --strict "$work/warn.pov"
 
 # What photon reads but cannot render: warnings, a summary by kind, and errors under --strict.
-printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nrainbow { distance 5 }\nsor { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }\nlathe { linear_spline 2, <0, 0>, <1, 1> }\nsphere { 0, 1 pigment { square rgb 1, rgb 0, rgb 0.5, rgb 0.5 } finish { ambient 0 } }\nsphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 } }\n' >"$work/degraded.pov"
+printf 'camera { location -5 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nrainbow { distance 5 }\novus { 1, 0.5 }\nlemon { <0, 0, 0>, <0, 1, 0>, 1, 2, 3 }\nsphere { 0, 1 pigment { square rgb 1, rgb 0, rgb 0.5, rgb 0.5 } finish { ambient 0 } }\nsphere { 0, 1 pigment { checker rgb 1, rgb 0 } finish { ambient 0 } }\n' >"$work/degraded.pov"
 expect 0 "$photon" check "$work/degraded.pov"
-grep -q "degraded.pov:4:1: warning: \`sor\` is skipped: photon has no sor yet" "$work/err" || fail "skipped sor not reported"
-grep -q "^           2 skipped object: 1 lathe, 1 sor" "$work/out" || { fail "no summary of skipped objects"; cat "$work/out"; }
+grep -q "degraded.pov:4:1: warning: \`ovus\` is skipped: photon has no ovus yet" "$work/err" || fail "skipped ovus not reported"
+grep -q "^           2 skipped object: 1 lemon, 1 ovus" "$work/out" || { fail "no summary of skipped objects"; cat "$work/out"; }
 grep -q "^           1 approximated pigment: 1 square" "$work/out" || fail "no summary of approximated pigments (checker is evaluated)"
 grep -q "^           1 ignored effect: 1 rainbow" "$work/out" || fail "no summary of ignored effects"
 expect 1 "$photon" check --strict "$work/degraded.pov"

@@ -51,16 +51,16 @@ void check_rgb(const dsl::Vector3& c, double r, double g, double b) {
 
 TEST_CASE("objects photon has no shape for are skipped with a warning at their place", "[dsl][degradation]") {
     const Built b = build_text(std::string(lit) +
-                               "superellipsoid { <0.5, 0.5> pigment { rgb 1 } }\n"
+                               "ovus { 1, 0.5 pigment { rgb 1 } }\n"
                                "cylinder { 0, y, 1 open }\n"
-                               "sor { 4, <0, 0>, <1, 0>, <1, 1>, <0, 1> }\n"
+                               "sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }\n"
                                "difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
                                "blob { threshold 0.5 sphere { 0, 1, 1 } cylinder { 0, y, 1, 1 } }\n"
                                "sphere { 0, 1 }\n"
-                               "union { sphere { 0, 1 } lathe { linear_spline 2, <0, 0>, <1, 1> } }\n");
+                               "union { sphere { 0, 1 } julia_fractal { <0.4, 0.2, 0.3, -0.2> } }\n");
     CHECK(places(b.warnings, "skipped object") ==
-          std::vector<std::string>{"3:1 superellipsoid", "5:1 sor", "7:1 blob", "9:25 lathe"});
-    CHECK_THAT(all_messages(b.warnings), Contains("`superellipsoid` is skipped: photon has no superellipsoid yet"));
+          std::vector<std::string>{"3:1 ovus", "5:1 sphere_sweep", "7:1 blob", "9:25 julia_fractal"});
+    CHECK_THAT(all_messages(b.warnings), Contains("`ovus` is skipped: photon has no ovus yet"));
     CHECK(b.objects == 4);  // the cylinder, the difference, the sphere and the union's sphere
     CHECK(b.lights == 1);
     REQUIRE(b.desc.objects.size() == 8);  // the light and seven objects
@@ -84,18 +84,18 @@ TEST_CASE("directives inside a skipped block still run", "[dsl][degradation]") {
 
 TEST_CASE("a declared skipped object warns again where it is used", "[dsl][degradation]") {
     const Built b = build_text(std::string(lit) +
-                               "#declare Post = superellipsoid { <1, 1> }\n"
+                               "#declare Post = lemon { <0, 0, 0>, <0, 1, 0>, 1, 2, 3 }\n"
                                "object { Post translate x }\n"
                                "union { object { Post } sphere { 0, 1 } }\n");
     CHECK(places(b.warnings, "skipped object") ==
-          std::vector<std::string>{"3:17 superellipsoid", "4:10 superellipsoid", "5:18 superellipsoid"});
+          std::vector<std::string>{"3:17 lemon", "4:10 lemon", "5:18 lemon"});
     CHECK_THAT(all_messages(b.warnings),
-               Contains("`Post` is a `superellipsoid` (declared at 3:10): skipped, photon has no superellipsoid yet"));
+               Contains("`Post` is a `lemon` (declared at 3:10): skipped, photon has no lemon yet"));
     CHECK(b.objects == 1);
 }
 
 TEST_CASE("a scene whose every object was skipped says that nothing renders", "[dsl][degradation]") {
-    const Built b = build_text(std::string(lit) + "superellipsoid { <1, 1> }\nlemon { <0, 0, 0>, <0, 1, 0>, 1, 2, 3 }\n");
+    const Built b = build_text(std::string(lit) + "ovus { 1, 0.5 }\nlemon { <0, 0, 0>, <0, 1, 0>, 1, 2, 3 }\n");
     CHECK(b.objects == 0);
     CHECK(places(b.warnings, "nothing renders") == std::vector<std::string>{"1:1 "});
     CHECK_THAT(all_messages(b.warnings),
@@ -272,7 +272,7 @@ TEST_CASE("every form of normal parses, and those photon cannot evaluate are ign
 TEST_CASE("photon's own warnings about what it renders differently carry a kind", "[dsl][degradation]") {
     // Every warning of these constructs has its kind and keyword for the summary of `photon check`.
     const Parsed b = parse(std::string(lit) +
-                           "rainbow { distance 1 } superellipsoid { <1, 1> } sphere { 0, 1 pigment { quilted } "
+                           "rainbow { distance 1 } ovus { 1, 0.5 } sphere { 0, 1 pigment { quilted } "
                            "normal { quilted 1 } }\n");
     INFO(all_messages(b.warnings));
     REQUIRE(b.warnings.size() == 4);

@@ -218,7 +218,7 @@ TEST_CASE("directives used wrongly", "[dsl][errors]") {
 TEST_CASE("constructs photon reads but cannot render are warnings, errors inside them stay errors",
           "[dsl][errors]") {
     // The warnings themselves: degradation_test.cpp.
-    CHECK(error_of("superellipsoid { <1, 1> }\nlight_source { 0, 1 }").empty());
+    CHECK(error_of("ovus { 1, 0.5 }\nlight_source { 0, 1 }").empty());
     CHECK(error_of("sky_sphere { pigment { rgb 1 } }\nsphere { 0, 1 }").empty());
     CHECK_THAT(error_of("sphere { 0, 1 pigment { checker rgb 1, rgb } }"), Contains("1:44: expected the value of `rgb`, found `}`"));
     CHECK_THAT(error_of("sphere { 0, 1 clipped_by { 1 } }"), Contains("1:28: expected an object or `bounded_by`"));

@@ -17,12 +17,15 @@
 #include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
+#include "../geometry/lathe.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/polygon.hpp"
 #include "../geometry/polynomial_surface.hpp"
 #include "../geometry/prism.hpp"
 #include "../geometry/quadric.hpp"
+#include "../geometry/sor.hpp"
 #include "../geometry/sphere.hpp"
+#include "../geometry/superellipsoid.hpp"
 #include "../geometry/torus.hpp"
 #include "../geometry/transformed.hpp"
 #include "../geometry/triangle.hpp"
@@ -74,6 +77,9 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Polygon<S>>) return "polygon";
     else if constexpr (std::is_same_v<Shape, Prism<S>>) return "prism";
     else if constexpr (std::is_same_v<Shape, PolynomialSurface<S>>) return "poly";
+    else if constexpr (std::is_same_v<Shape, Superellipsoid<S>>) return "superellipsoid";
+    else if constexpr (std::is_same_v<Shape, Lathe<S>>) return "lathe";
+    else if constexpr (std::is_same_v<Shape, Sor<S>>) return shape.open() ? "open sor" : "sor";
     else return "object";
 }
 

@@ -20,13 +20,16 @@
 #include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
+#include "../geometry/lathe.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/polygon.hpp"
 #include "../geometry/polynomial_surface.hpp"
 #include "../geometry/primitive.hpp"
 #include "../geometry/prism.hpp"
 #include "../geometry/quadric.hpp"
+#include "../geometry/sor.hpp"
 #include "../geometry/sphere.hpp"
+#include "../geometry/superellipsoid.hpp"
 #include "../geometry/torus.hpp"
 #include "../geometry/transformed.hpp"
 #include "../geometry/triangle.hpp"
@@ -212,7 +215,8 @@ template <Scalar S>
 using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCone<S>, Transformed<Sphere<S>>,
                        Transformed<Box<S>>, Transformed<Cylinder<S>>, Transformed<TruncatedCone<S>>,
                        Transformed<Torus<S>>, Quadric<S>, Transformed<Prism<S>>,
-                       Transformed<PolynomialSurface<S>>>;
+                       Transformed<PolynomialSurface<S>>, Transformed<Superellipsoid<S>>, Transformed<Lathe<S>>,
+                       Transformed<Sor<S>>>;
 
 /// The shapes the scene language builds; user programs may list their own instead. A cylinder,
 /// cone or disc under a similarity (rotation, uniform scale, translation) is placed as the shape
@@ -222,13 +226,14 @@ using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCon
 /// the y axis at the origin, and the matrix costs little beside the quartic. A quadric and a
 /// polygon are never Transformed: their transformation is folded into their numbers. A prism (and
 /// text, a prism along z) is always Transformed, as the torus, and so is a polynomial surface
-/// (its transformation is not folded into its coefficients).
+/// (its transformation is not folded into its coefficients); so are a superellipsoid, a lathe and
+/// a sor (each lies at the origin, around or along the y axis).
 template <Scalar S>
 using DefaultScene =
     Scene<S, Sphere<S>, Plane<S>, Box<S>, Triangle<S>, TriangleMesh<S>, Cylinder<S>, TruncatedCone<S>, Disc<S>,
           Transformed<Sphere<S>>, Transformed<Box<S>>, Transformed<TruncatedCone<S>>, Transformed<Disc<S>>,
           Transformed<Torus<S>>, DefaultCsg<S>, Quadric<S>, Polygon<S>, Transformed<Prism<S>>,
-          Transformed<PolynomialSurface<S>>>;
+          Transformed<PolynomialSurface<S>>, Transformed<Superellipsoid<S>>, Transformed<Lathe<S>>, Transformed<Sor<S>>>;
 
 template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhConfig config) {
     std::vector<BBox<S>> boxes;

@@ -360,6 +360,21 @@ struct PolynomialShape {
     };
     std::optional<Gate> gate;
 };
+/// `superellipsoid { <e, n> }`: POV-Ray's, in the cube [-1, 1]^3 (e and n positive).
+struct SuperellipsoidShape {
+    double e = 0.5, n = 0.5;
+};
+/// `lathe { ... }` after POV-Ray's reading of its points (parser/revolved.hpp): the profile's
+/// curves in the (radius, height) plane, turned around the y axis.
+struct LatheShape {
+    std::shared_ptr<const std::vector<OutlineCurve>> profile;
+};
+/// `sor { N, points [open] }`: POV-Ray's points as (radius, height), checked as POV-Ray checks
+/// them (at least four, radii not negative, the inner heights rising).
+struct SorShape {
+    std::shared_ptr<const std::vector<glm::dvec2>> points;
+    bool open = false;
+};
 /// A TrueType font named in a text object, found by the parser (beside the scene, then on the
 /// include path) and read by the build step (font_files.hpp), as mesh files are.
 struct FontFile {
@@ -411,7 +426,8 @@ struct SkippedShape {
 
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
                            SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape, QuadricShape,
-                           PolygonShape, PrismShape, TextShape, PolynomialShape>;
+                           PolygonShape, PrismShape, TextShape, PolynomialShape, SuperellipsoidShape, LatheShape,
+                           SorShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -457,7 +473,7 @@ struct Object {
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
                                      "light_source", "",    "",      "cylinder", "cone", "disc", "torus",
-                                     "quadric",      "polygon", "prism", "text", "poly"};
+                                     "quadric",      "polygon", "prism", "text", "poly", "superellipsoid", "lathe", "sor"};
     static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);

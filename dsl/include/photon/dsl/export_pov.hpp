@@ -63,16 +63,27 @@ private:
         std::vector<glm::dvec2> points;
         for (const auto& contour : *p.contours)
             for (const OutlineCurve& c : contour) {
-                const auto& q = c.control;
-                if (c.degree == 1) points.insert(points.end(), {q[0], q[0] + (q[1] - q[0]) / 3.0, q[1] + (q[0] - q[1]) / 3.0, q[1]});
-                else if (c.degree == 2)
-                    points.insert(points.end(), {q[0], q[0] + 2.0 / 3.0 * (q[1] - q[0]), q[2] + 2.0 / 3.0 * (q[1] - q[2]), q[2]});
-                else points.insert(points.end(), {q[0], q[1], q[2], q[3]});
+                const auto cubic = as_cubic(c);
+                points.insert(points.end(), cubic.begin(), cubic.end());
             }
         out_ << "prism { bezier_spline " << (p.sweep == PrismShape::Sweep::conic ? "conic_sweep " : "linear_sweep ")
              << num(p.height1) << ", " << num(p.height2) << ", " << points.size();
         for (const glm::dvec2& q : points) out_ << ", <" << num(q.x) << ", " << num(q.y) << ">";
         out_ << (p.open ? " open" : "") << '\n';
+    }
+    /// A lathe as a bezier_spline one, as the prism: POV-Ray reads back the profile photon read.
+    void write_lathe(const LatheShape& l) {
+        out_ << "lathe { bezier_spline " << 4 * l.profile->size();
+        for (const OutlineCurve& c : *l.profile)
+            for (const glm::dvec2& q : as_cubic(c)) out_ << ", <" << num(q.x) << ", " << num(q.y) << ">";
+        out_ << '\n';
+    }
+    /// A curve's control points raised to a cubic's (exact for lines and quadratics).
+    static std::array<glm::dvec2, 4> as_cubic(const OutlineCurve& c) {
+        const auto& q = c.control;
+        if (c.degree == 1) return {q[0], q[0] + (q[1] - q[0]) / 3.0, q[1] + (q[0] - q[1]) / 3.0, q[1]};
+        if (c.degree == 2) return {q[0], q[0] + 2.0 / 3.0 * (q[1] - q[0]), q[2] + 2.0 / 3.0 * (q[1] - q[2]), q[2]};
+        return q;
     }
     static std::string on_off(bool b) { return b ? "on" : "off"; }
     void indent(int level) {
@@ -433,6 +444,14 @@ private:
                 out_ << (gate->sphere ? " bounded_by { sphere { " + vec(gate->center) + ", " + num(gate->radius) + " } }"
                                       : " bounded_by { box { " + vec(gate->min) + ", " + vec(gate->max) + " } }");
             out_ << '\n';
+        } else if (const auto* se = std::get_if<SuperellipsoidShape>(&o.shape)) {
+            out_ << "superellipsoid { <" << num(se->e) << ", " << num(se->n) << ">\n";
+        } else if (const auto* la = std::get_if<LatheShape>(&o.shape)) {
+            write_lathe(*la);
+        } else if (const auto* so = std::get_if<SorShape>(&o.shape)) {
+            out_ << "sor { " << so->points->size();
+            for (const glm::dvec2& point : *so->points) out_ << ", <" << num(point.x) << ", " << num(point.y) << ">";
+            out_ << (so->open ? " open" : "") << '\n';
         } else if (const auto* x = std::get_if<TextShape>(&o.shape)) {
             out_ << "text { ttf " << quoted(x->font.path.string()) << ' ' << quoted(x->text) << ' ' << num(x->thickness) << ", "
                  << vec(x->offset) << '\n';

@@ -65,6 +65,7 @@ namespace photon::dsl {
 #include "parser/quadric_polygon.hpp"
 #include "parser/prism.hpp"
 #include "parser/polynomials.hpp"
+#include "parser/revolved.hpp"
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/sky.hpp"

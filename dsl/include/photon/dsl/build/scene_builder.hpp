@@ -362,6 +362,14 @@ private:
         place(p, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
     }
+    template <class Revolved>
+        requires(std::is_same_v<Revolved, SuperellipsoidShape> || std::is_same_v<Revolved, LatheShape> ||
+                 std::is_same_v<Revolved, SorShape>)
+    std::optional<DefaultCsg<S>> csg_leaf(const Revolved& r, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(r, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
     std::optional<DefaultCsg<S>> csg_leaf(const TextShape& text, const Transform& t) {
         std::optional<DefaultCsg<S>> leaf;
         place(text, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
@@ -379,7 +387,8 @@ private:
         return std::is_same_v<Shape, SphereShape> || std::is_same_v<Shape, BoxShape> || std::is_same_v<Shape, PlaneShape> ||
                std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape> ||
                std::is_same_v<Shape, QuadricShape> || std::is_same_v<Shape, PrismShape> || std::is_same_v<Shape, TextShape> ||
-               std::is_same_v<Shape, PolynomialShape>;
+               std::is_same_v<Shape, PolynomialShape> || std::is_same_v<Shape, SuperellipsoidShape> ||
+               std::is_same_v<Shape, LatheShape> || std::is_same_v<Shape, SorShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -446,6 +455,19 @@ private:
             surface = surface.gated({g->sphere ? PolynomialGate::Kind::sphere : PolynomialGate::Kind::box, g->center,
                                      g->radius, g->min, g->max});
         f(Transformed<PolynomialSurface<S>>(std::move(surface), to_affine<S>(t)));
+    }
+    /// The superellipsoid, lathe and sor placed: always Transformed (each lies at the origin,
+    /// around or along the y axis), as the torus.
+    template <class F> void place(const SuperellipsoidShape& g, const Transform& t, F&& f) {
+        f(Transformed<Superellipsoid<S>>(Superellipsoid<S>(S(g.e), S(g.n)), to_affine<S>(t)));
+    }
+    template <class F> void place(const LatheShape& g, const Transform& t, F&& f) {
+        std::vector<OutlineSegment> profile;
+        for (const OutlineCurve& c : *g.profile) profile.push_back({c.control, c.degree});
+        f(Transformed<Lathe<S>>(Lathe<S>(profile), to_affine<S>(t)));
+    }
+    template <class F> void place(const SorShape& g, const Transform& t, F&& f) {
+        f(Transformed<Sor<S>>(Sor<S>(*g.points, g.open), to_affine<S>(t)));
     }
     /// Text placed: its glyphs' outlines (font_files.hpp) as one prism, turned to run from z = 0
     /// to z = thickness (y and z swapped: the outline's v is y). One prism for all glyphs fills
@@ -539,6 +561,12 @@ private:
     }
     void add_shape(const PolynomialShape& p, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(p, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
+    template <class Revolved>
+        requires(std::is_same_v<Revolved, SuperellipsoidShape> || std::is_same_v<Revolved, LatheShape> ||
+                 std::is_same_v<Revolved, SorShape>)
+    void add_shape(const Revolved& g, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(g, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const TextShape& text, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(text, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });

@@ -4,8 +4,11 @@
 // min_extent() and max_extent() (the parser holds no geometry; ParseOptions::geometry answers),
 // and inside(), which the description answers for the solids photon has.
 
+#include <photon/geometry/lathe.hpp>
 #include <photon/geometry/outline.hpp>
 #include <photon/geometry/polynomial_surface.hpp>
+#include <photon/geometry/sor.hpp>
+#include <photon/geometry/superellipsoid.hpp>
 
 #include "parser_class.hpp"
 
@@ -116,6 +119,14 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                 return Outline(contours).contains(q);
             } else if constexpr (std::is_same_v<S, PolynomialShape>) {  // POV-Ray's Inside_Poly (the gate plays no part)
                 return PolynomialSurface<double>(s.order, *s.coefficients).value(p) < 1e-4;  // INSIDE_TOLERANCE
+            } else if constexpr (std::is_same_v<S, SuperellipsoidShape>) {
+                return Superellipsoid<double>(s.e, s.n).contains(p);
+            } else if constexpr (std::is_same_v<S, LatheShape>) {  // POV-Ray's crossing parity
+                std::vector<OutlineSegment> profile;
+                for (const OutlineCurve& c : *s.profile) profile.push_back({c.control, c.degree});
+                return Lathe<double>(profile).contains(p);
+            } else if constexpr (std::is_same_v<S, SorShape>) {  // the closed solid, also when open (POV-Ray)
+                return Sor<double>(*s.points).contains(p);
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

@@ -70,6 +70,12 @@ inline Object Parser::parse_object(const Token& kw) {
         parse_text(obj);
     } else if (w == "quartic" || w == "cubic" || w == "poly" || w == "polynomial") {
         parse_polynomial(kw, obj);
+    } else if (w == "superellipsoid") {
+        parse_superellipsoid(obj);
+    } else if (w == "lathe") {
+        parse_lathe(obj);
+    } else if (w == "sor") {
+        parse_sor(obj);
     } else if (w == "triangle" || w == "smooth_triangle") {
         obj.shape = parse_triangle_corners(kw);
     } else if (w == "mesh") {

@@ -324,6 +324,10 @@ private:
     void parse_text(Object& obj);
     void parse_polynomial(const Token& kw, Object& obj);
     bool parse_polynomial_gate(Object& obj, const std::vector<Object>& bounds);
+    // revolved.hpp
+    void parse_superellipsoid(Object& obj);
+    void parse_lathe(Object& obj);
+    void parse_sor(Object& obj);
 
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
