@@ -39,6 +39,7 @@
 #include "material/material.hpp"
 #include "material/scatter.hpp"
 
+#include "texture/bump_map.hpp"
 #include "texture/color_map.hpp"
 #include "texture/image_map.hpp"
 #include "texture/layer_color.hpp"

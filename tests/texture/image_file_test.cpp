@@ -14,6 +14,11 @@
 
 #include <photon/io/image_file.hpp>
 
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+#include <png.h>
+#endif
+#include <cstdio>
+
 using namespace photon;
 
 namespace {
@@ -91,3 +96,38 @@ TEST_CASE("a missing or unreadable file is an ImageError naming it", "[image_fil
     const ScratchDir dir;
     CHECK_THROWS_WITH(read_pixel_grid(dir.path / "none.png"), Catch::Contains("none.png"));
 }
+
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+TEST_CASE("a palette PNG gives its colours and its indices", "[image_file]") {
+    const ScratchDir dir;
+    const auto file = dir.path / "palette.png";
+    // 3 x 1 pixels of indices 2, 0, 1 into the palette red, green, blue (written with libpng).
+    {
+        std::FILE* f = std::fopen(file.c_str(), "wb");
+        REQUIRE(f);
+        png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+        png_infop info = png_create_info_struct(png);
+        png_init_io(png, f);
+        png_set_IHDR(png, info, 3, 1, 8, PNG_COLOR_TYPE_PALETTE, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+                     PNG_FILTER_TYPE_DEFAULT);
+        png_color palette[3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}};
+        png_set_PLTE(png, info, palette, 3);
+        png_write_info(png, info);
+        png_byte row[3] = {2, 0, 1};
+        png_write_row(png, row);
+        png_write_end(png, nullptr);
+        png_destroy_write_struct(&png, &info);
+        std::fclose(f);
+    }
+    const PixelGrid g = read_pixel_grid(file);
+    REQUIRE(g.indices.size() == 3);
+    CHECK(g.indices[0] == 2);
+    CHECK(g.indices[1] == 0);
+    CHECK(g.indices[2] == 1);
+    CHECK(g.at(0, 0)[2] == 1.0f);  // blue, index 2
+    CHECK(g.at(1, 0)[0] == 1.0f);  // red, index 0
+    // A PNG without a palette has no indices.
+    write_test_image<unsigned char>(dir.path / "rgb.png", 1, 1, 3, {1, 2, 3}, OIIO::TypeDesc::UINT8);
+    CHECK(read_pixel_grid(dir.path / "rgb.png").indices.empty());
+}
+#endif

@@ -7,7 +7,9 @@
 #include <memory>
 #include <vector>
 
+#include <photon/texture/bump_map.hpp>
 #include <photon/texture/image_map.hpp>
+#include <photon/texture/normal_field.hpp>
 #include <photon/texture/layered.hpp>
 
 using namespace photon;
@@ -140,4 +142,41 @@ TEMPLATE_TEST_CASE("an image map is a layer whose clear pixels show the layer be
             const Rgb<S> c = stack({S(i) / S(17), S(j) / S(13), S(0)});
             for (int k = 0; k < 3; ++k) CHECK(c[k] <= bound[k] + S(1e-6));
         }
+}
+
+TEST_CASE("a bump map tilts the normal by its image's slope, as a finite difference of its heights says",
+          "[texture][bump_map]") {
+    // 16 x 8 grey pixels: along x a ramp of slope 0.03 per pixel, along y (down the rows) a
+    // ramp of slope 0.05 per row.
+    const unsigned w = 16, h = 8;
+    std::vector<PixelGrid::Pixel> px;
+    const auto grey = [](unsigned x, unsigned y) { return 0.1f + 0.03f * float(x) + 0.05f * float(y); };
+    for (unsigned y = 0; y < h; ++y)
+        for (unsigned x = 0; x < w; ++x) px.push_back({grey(x, y), grey(x, y), grey(x, y), 1.0f});
+    const auto image = std::make_shared<const PixelGrid>(w, h, std::move(px));
+    const double amount = 2.0;
+    const ImageBumpMap<double> bumps(image, {}, amount);
+    static_assert(NormalField<ImageBumpMap<double>, double>);
+    // On a floor (normal +y) at the centre of pixel (5, 3): u = 5.5 / 16, rows from the top: y = 1 - 3.5 / 8.
+    const Vec3<double> p(5.5 / w, 1.0 - 3.5 / h, 0.0);
+    const Vec3<double> n = bumps(p, {0, 1, 0});
+    // The heights' differences: left to right across two pixels, and from this row to the next.
+    const double across = amount * (grey(6, 4) - grey(4, 4)) / 2.0;  // the next row's neighbours
+    const double down = amount * (grey(5, 3) - grey(5, 4));
+    // POV-Ray's triangle (0, h1, 0), (-1, h2, 1), (1, h3, 1): normal (-across, 1, down), and the
+    // frame of a +y normal turns its z to -z.
+    const Vec3<double> expected = glm::normalize(Vec3<double>(-across, 1.0, -down));
+    CHECK(n.x == Approx(expected.x).margin(1e-6));
+    CHECK(n.y == Approx(expected.y).margin(1e-6));
+    CHECK(n.z == Approx(expected.z).margin(1e-6));
+    CHECK(glm::length(n) == Approx(1.0));
+    // A flat image leaves the normal as it was, on any surface.
+    const auto flat = std::make_shared<const PixelGrid>(2u, 2u, std::vector<PixelGrid::Pixel>(4, {0.5f, 0.5f, 0.5f, 1.0f}));
+    const ImageBumpMap<double> none(flat, {}, 1.0);
+    const Vec3<double> slanted = glm::normalize(Vec3<double>(0.3, -0.4, 0.8));
+    const Vec3<double> same = none({0.2, 0.7, 0.1}, slanted);
+    CHECK(glm::length(same - slanted) < 1e-9);
+    // Outside a `once` image, the normal is untouched.
+    const ImageBumpMap<double> once(image, {.once = true}, amount);
+    CHECK(once({1.5, 0.5, 0.0}, {0, 1, 0}) == Vec3<double>(0, 1, 0));
 }

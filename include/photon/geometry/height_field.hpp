@@ -68,7 +68,7 @@ private:
 };
 
 /// POV-Ray 3.7's heights of an image (image_height_at, scaled as its height field scales them:
-/// a sample of 65535 is 65535 / 65536): a grey image's grey level; a colour image of more than
+/// a sample of 65535 is 65535 / 65536): a palette image's index times 256; a grey image's grey level; a colour image of more than
 /// 8 bits its grey value (0.297 red + 0.589 green + 0.114 blue); an 8-bit colour image red as
 /// the high byte and green as the low one. Row 0 of the image is the far edge (z = 1).
 [[nodiscard]] inline std::vector<double> height_field_heights(const PixelGrid& image) {
@@ -78,7 +78,8 @@ private:
         for (unsigned x = 0; x < w; ++x) {
             const PixelGrid::Pixel& p = image.at(x, hgt - 1 - z);
             double v;
-            if (image.grayscale) v = double(p[0]) * 65535.0;
+            if (!image.indices.empty()) v = double(image.indices[std::size_t(hgt - 1 - z) * w + x]) * 256.0;
+            else if (image.grayscale) v = double(p[0]) * 65535.0;
             else if (image.max_value != 255) v = (0.297 * p[0] + 0.589 * p[1] + 0.114 * p[2]) * 65535.0;
             else v = (double(p[0]) * 256.0 + double(p[1])) * 255.0;
             out[std::size_t(z) * w + x] = std::floor(std::clamp(v, 0.0, 65535.0) + 1e-6) / 65536.0;

@@ -10,7 +10,14 @@
 
 #include <OpenImageIO/imageio.h>
 
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG  // libpng, for a palette PNG's indices (OpenImageIO expands them)
+#include <png.h>
+#include <csetjmp>
+#include <cstdio>
+#endif
+
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -21,18 +28,6 @@
 #include "../texture/pixel_grid.hpp"
 
 namespace photon {
-
-/// How an image file's samples are decoded to linear values.
-struct ImageGamma {
-    enum class Kind {
-        file,   ///< as POV-Ray 3.7 decodes the file by default (see above)
-        none,   ///< the samples as stored (POV-Ray's height fields and bump maps, `gamma 1.0`)
-        power,  ///< value^gamma (`gamma G`)
-        srgb    ///< the sRGB curve (`gamma srgb`)
-    };
-    Kind kind = Kind::file;
-    double gamma = 1.0;  ///< for Kind::power
-};
 
 namespace image_file_detail {
 
@@ -53,10 +48,41 @@ inline ImageGamma file_decoding(const OIIO::ImageSpec& spec, const std::string& 
     return {ImageGamma::Kind::srgb};
 }
 
+/// A palette PNG's indices, row by row from the top; empty when the file is no palette PNG (or
+/// photon was built without libpng).
+inline std::vector<std::uint8_t> png_palette_indices([[maybe_unused]] const std::filesystem::path& path) {
+    std::vector<std::uint8_t> out;
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return out;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (png && info && setjmp(png_jmpbuf(png)) == 0) {
+        png_init_io(png, file);
+        png_read_info(png, info);
+        if (png_get_color_type(png, info) == PNG_COLOR_TYPE_PALETTE) {
+            png_set_packing(png);  // 1, 2 and 4 bits per index: one byte each
+            png_read_update_info(png, info);
+            const png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+            out.resize(std::size_t(w) * h);
+            std::vector<png_bytep> rows(h);
+            for (png_uint_32 y = 0; y < h; ++y) rows[y] = out.data() + std::size_t(y) * w;
+            png_read_image(png, rows.data());
+        }
+    } else {
+        out.clear();
+    }
+    png_destroy_read_struct(png ? &png : nullptr, info ? &info : nullptr, nullptr);
+    std::fclose(file);
+#endif
+    return out;
+}
+
 }  // namespace image_file_detail
 
 /// The image at `path`, its colour decoded to linear values by `gamma` (alpha is never decoded).
-/// One or two channels read as grey (and alpha); three or four as RGB (and alpha). Throws
+/// One or two channels read as grey (and alpha); three or four as RGB (and alpha). A palette PNG
+/// also gives its indices (with libpng: PHOTON_HAS_PNG). Throws
 /// ImageError when the file cannot be read.
 [[nodiscard]] inline PixelGrid read_pixel_grid(const std::filesystem::path& path, ImageGamma gamma = {}) {
     // PNG and TGA store colour unassociated with alpha, as POV-Ray reads it: keep it so.
@@ -92,6 +118,10 @@ inline ImageGamma file_decoding(const OIIO::ImageSpec& spec, const std::string& 
     grid.has_alpha = alpha >= 0;
     grid.grayscale = grey;
     grid.max_value = spec.format == OIIO::TypeDesc::UINT8 ? 255u : spec.format == OIIO::TypeDesc::UINT16 ? 65535u : 0u;
+    if (std::string(in->format_name()) == "png") {
+        grid.indices = image_file_detail::png_palette_indices(path);
+        if (grid.indices.size() != grid.pixels().size()) grid.indices.clear();
+    }
     return grid;
 }
 

@@ -17,6 +17,7 @@
 #include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
+#include "../geometry/height_field.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/polygon.hpp"
 #include "../geometry/prism.hpp"
@@ -71,6 +72,7 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Quadric<S>>) return shape.bounds().is_finite() ? "ellipsoid quadric" : "quadric";
     else if constexpr (std::is_same_v<Shape, Polygon<S>>) return "polygon";
     else if constexpr (std::is_same_v<Shape, Prism<S>>) return "prism";
+    else if constexpr (std::is_same_v<Shape, HeightField<S>>) return "height field";
     else return "object";
 }
 

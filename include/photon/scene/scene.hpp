@@ -19,6 +19,7 @@
 #include "../geometry/cone.hpp"
 #include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
+#include "../geometry/height_field.hpp"
 #include "../geometry/disc.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/polygon.hpp"
@@ -210,7 +211,7 @@ private:
 template <Scalar S>
 using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCone<S>, Transformed<Sphere<S>>,
                        Transformed<Box<S>>, Transformed<Cylinder<S>>, Transformed<TruncatedCone<S>>,
-                       Transformed<Torus<S>>, Quadric<S>, Transformed<Prism<S>>>;
+                       Transformed<Torus<S>>, Quadric<S>, Transformed<Prism<S>>, Transformed<HeightField<S>>>;
 
 /// The shapes the scene language builds; user programs may list their own instead. A cylinder,
 /// cone or disc under a similarity (rotation, uniform scale, translation) is placed as the shape
@@ -219,12 +220,13 @@ using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCon
 /// fewer to dispatch; the same frustum code). A torus is always Transformed: Torus lies around
 /// the y axis at the origin, and the matrix costs little beside the quartic. A quadric and a
 /// polygon are never Transformed: their transformation is folded into their numbers. A prism (and
-/// text, a prism along z) is always Transformed, as the torus.
+/// text, a prism along z) is always Transformed, as the torus; so is a height field (over the unit square).
 template <Scalar S>
 using DefaultScene =
     Scene<S, Sphere<S>, Plane<S>, Box<S>, Triangle<S>, TriangleMesh<S>, Cylinder<S>, TruncatedCone<S>, Disc<S>,
           Transformed<Sphere<S>>, Transformed<Box<S>>, Transformed<TruncatedCone<S>>, Transformed<Disc<S>>,
-          Transformed<Torus<S>>, DefaultCsg<S>, Quadric<S>, Polygon<S>, Transformed<Prism<S>>>;
+          Transformed<Torus<S>>, DefaultCsg<S>, Quadric<S>, Polygon<S>, Transformed<Prism<S>>,
+          Transformed<HeightField<S>>>;
 
 template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhConfig config) {
     std::vector<BBox<S>> boxes;

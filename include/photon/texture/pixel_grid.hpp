@@ -7,11 +7,24 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 namespace photon {
+
+/// How an image file's samples are decoded to linear values.
+struct ImageGamma {
+    enum class Kind {
+        file,   ///< as POV-Ray 3.7 decodes the file by default (io/image_file.hpp)
+        none,   ///< the samples as stored (POV-Ray's height fields and bump maps, `gamma 1.0`)
+        power,  ///< value^gamma (`gamma G`)
+        srgb    ///< the sRGB curve (`gamma srgb`)
+    };
+    Kind kind = Kind::file;
+    double gamma = 1.0;  ///< for Kind::power
+};
 
 struct PixelGrid {
     using Pixel = std::array<float, 4>;  ///< red, green, blue, alpha (1: opaque)
@@ -39,6 +52,9 @@ struct PixelGrid {
     /// The largest integer value of the file's samples: 255 for 8 bits, 65535 for 16; 0 for a
     /// floating-point file. POV-Ray's height fields read 8-bit colour files differently.
     unsigned max_value = 255;
+    /// A palette image's palette index of each pixel, row by row from the top; empty for other
+    /// images. POV-Ray's height fields read the index, not the colour, of a palette image.
+    std::vector<std::uint8_t> indices;
 
 private:
     unsigned width_ = 0, height_ = 0;

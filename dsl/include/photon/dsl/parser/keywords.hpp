@@ -63,9 +63,9 @@ inline constexpr std::string_view object_keywords[] = {
     "sphere", "box",          "plane",       "triangle",   "smooth_triangle", "mesh",        "mesh2",
     "union",  "merge",        "difference",  "intersection", "object",        "light_source", "light_group",
     "cylinder", "cone",       "disc",        "torus",      "quadric",         "polygon",
-    "prism", "text"};
+    "prism", "text", "height_field"};
 inline constexpr std::string_view unsupported_objects[] = {
-    "sor",            "lathe",      "superellipsoid", "blob",       "height_field", "isosurface",
+    "sor",            "lathe",      "superellipsoid", "blob",       "isosurface",
     "julia_fractal", "parametric",     "cubic",      "quartic",        "poly",       "polynomial",   "sphere_sweep",
     "bicubic_patch",  "ovus",       "lemon"};
 /// Blend maps: declarable, and read in patterned pigments and textures (parser/patterns.hpp).
@@ -75,7 +75,7 @@ inline constexpr std::string_view statement_keywords[] = {
     "camera",          "light_source", "global_settings", "background", "sphere", "box", "plane", "triangle",
     "smooth_triangle", "mesh",         "union",           "merge",      "difference", "intersection", "object",
     "cylinder",        "cone",         "disc",            "torus",      "quadric",    "polygon",
-    "prism",           "text"};
+    "prism",           "text",         "height_field"};
 inline constexpr std::string_view color_keywords[] = {"color", "colour", "rgb",  "rgbf",   "rgbt",    "rgbft",
                                                       "red",   "green",  "blue", "filter", "transmit"};
 inline constexpr std::string_view constants[] = {

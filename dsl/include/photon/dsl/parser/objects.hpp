@@ -68,6 +68,8 @@ inline Object Parser::parse_object(const Token& kw) {
         parse_prism(obj);
     } else if (w == "text") {
         parse_text(obj);
+    } else if (w == "height_field") {
+        parse_height_field(kw, obj);
     } else if (w == "triangle" || w == "smooth_triangle") {
         obj.shape = parse_triangle_corners(kw);
     } else if (w == "mesh") {
