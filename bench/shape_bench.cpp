@@ -8,11 +8,13 @@
 #include <benchmark/benchmark.h>
 
 #include <photon/geometry/cylinder.hpp>
+#include <photon/geometry/height_field.hpp>
 #include <photon/geometry/polygon.hpp>
 #include <photon/geometry/prism.hpp>
 #include <photon/geometry/quadric.hpp>
 #include <photon/geometry/sphere.hpp>
 #include <photon/geometry/triangle.hpp>
+#include <photon/geometry/triangle_mesh.hpp>
 #include <photon/math/rng.hpp>
 #include <photon/math/sampling.hpp>
 #include <photon/scene/scene.hpp>
@@ -124,6 +126,42 @@ template <class S> void prism_text_row(benchmark::State& s) {  // 24 "glyphs" of
     run(s, Prism<S>(Outline(contours), S(-0.1), S(0.1)));
 }
 
+/// Rolling hills on a 256 x 256 grid, heights in [0, 1].
+std::vector<double> hills(unsigned n) {
+    std::vector<double> h(std::size_t(n) * n);
+    for (unsigned j = 0; j < n; ++j)
+        for (unsigned i = 0; i < n; ++i)
+            h[std::size_t(j) * n + i] = 0.5 + 0.25 * std::sin(0.09 * i) * std::cos(0.07 * j) + 0.25 * std::sin(0.031 * (i + 2 * j));
+    return h;
+}
+/// The unit square's field placed over [-1, 1]^2, heights from -1 to 1.
+template <class S> Affine<S> hills_placement() {
+    return Affine<S>::scale({2, 2, 2}).then(Affine<S>::translate({-1, -1, -1}));
+}
+template <class S> void height_field_256(benchmark::State& s) {
+    run(s, Transformed<HeightField<S>>(HeightField<S>(256, 256, hills(256)), hills_placement<S>()));
+}
+template <class S> void height_field_256_smooth(benchmark::State& s) {
+    run(s, Transformed<HeightField<S>>(HeightField<S>(256, 256, hills(256), {.smooth = true}), hills_placement<S>()));
+}
+template <class S> void height_field_as_mesh(benchmark::State& s) {  // the same 130,050 triangles in a mesh's BVH
+    const unsigned n = 256;
+    const std::vector<double> h = hills(n);
+    std::vector<Vec3<S>> points;
+    for (unsigned j = 0; j < n; ++j)
+        for (unsigned i = 0; i < n; ++i)
+            points.push_back(hills_placement<S>().point(Vec3<S>(S(double(i) / (n - 1)), S(h[std::size_t(j) * n + i]),
+                                                                S(double(j) / (n - 1)))));
+    std::vector<typename TriangleMesh<S>::Index> tris;
+    for (unsigned j = 0; j + 1 < n; ++j)
+        for (unsigned i = 0; i + 1 < n; ++i) {
+            const auto v = [&](unsigned a, unsigned b) { return std::uint32_t(b * n + a); };
+            tris.push_back({v(i, j), v(i + 1, j), v(i, j + 1)});
+            tris.push_back({v(i + 1, j + 1), v(i, j + 1), v(i + 1, j)});
+        }
+    run(s, TriangleMesh<S>(std::move(points), std::move(tris)));
+}
+
 }  // namespace
 
 #define PHOTON_SHAPE_BENCH(f) BENCHMARK_TEMPLATE(f, float); BENCHMARK_TEMPLATE(f, double)
@@ -141,5 +179,8 @@ PHOTON_SHAPE_BENCH(prism_square);
 PHOTON_SHAPE_BENCH(prism_curved);
 PHOTON_SHAPE_BENCH(prism_conic);
 PHOTON_SHAPE_BENCH(prism_text_row);
+PHOTON_SHAPE_BENCH(height_field_256);
+PHOTON_SHAPE_BENCH(height_field_256_smooth);
+PHOTON_SHAPE_BENCH(height_field_as_mesh);
 
 BENCHMARK_MAIN();
