@@ -19,7 +19,7 @@ namespace photon::dsl::detail {
 
 /// POV-Ray's image file type keywords.
 inline constexpr std::string_view image_file_types[] = {"png", "jpeg", "gif", "tga", "ppm", "pgm",
-                                                        "tiff", "exr", "hdr", "sys", "iff"};
+                                                        "tiff", "exr", "hdr", "sys", "iff", "pot"};
 
 // IMAGE_FILE: [TYPE] STRING [gamma (FLOAT | srgb | bt709)] [premultiplied BOOL]
 // TYPE one of image_file_types; without one, the name's extension says the type.
@@ -39,7 +39,7 @@ inline ImageFile Parser::parse_image_file(const Token& kw) {
                                 "hdr) before \"" + name.text + "\"");
     }
     const std::filesystem::path written(name.text);
-    if (options_.read_include) {
+    if (options_.read_include || f.type == "pot") {  // POV-Ray's Fractint POT files: photon skips them
         f.path = written;  // scenes read from memory name no files photon could open
     } else {
         std::vector<std::filesystem::path> candidates{written.is_absolute() ? written
@@ -239,6 +239,12 @@ inline void Parser::parse_height_field(const Token& kw, Object& obj) {
         } else {
             break;
         }
+    }
+    if (!function && h.file.type == "pot") {
+        degrade(kw.location, degraded::skipped_object, "height_field",
+                "`height_field { pot ... }` is skipped: photon does not read Fractint POT files (use png)");
+        obj.shape = SkippedShape{"height_field", "photon does not read Fractint POT files"};
+        return;
     }
     if (function) {
         degrade(kw.location, degraded::skipped_object, "height_field",
