@@ -9,6 +9,7 @@
 
 #include <photon/geometry/cylinder.hpp>
 #include <photon/geometry/lathe.hpp>
+#include <photon/geometry/height_field.hpp>
 #include <photon/geometry/polygon.hpp>
 #include <photon/geometry/polynomial_surface.hpp>
 #include <photon/geometry/prism.hpp>
@@ -18,6 +19,7 @@
 #include <photon/geometry/torus.hpp>
 #include <photon/geometry/superellipsoid.hpp>
 #include <photon/geometry/triangle.hpp>
+#include <photon/geometry/triangle_mesh.hpp>
 #include <photon/math/rng.hpp>
 #include <photon/math/sampling.hpp>
 #include <photon/scene/scene.hpp>
@@ -173,6 +175,41 @@ template <class S> void lathe_vase(benchmark::State& s) {  // two cubic Beziers
 template <class S> void sor_vase(benchmark::State& s) {  // 4 cubic segments, closed
     run(s, Sor<S>({{0.2, -1.2}, {0.8, -1}, {1, -0.5}, {0.5, 0}, {0.4, 0.5}, {0.6, 1}, {0.7, 1.2}}));
 }
+/// Rolling hills on a 256 x 256 grid, heights in [0, 1].
+std::vector<double> hills(unsigned n) {
+    std::vector<double> h(std::size_t(n) * n);
+    for (unsigned j = 0; j < n; ++j)
+        for (unsigned i = 0; i < n; ++i)
+            h[std::size_t(j) * n + i] = 0.5 + 0.25 * std::sin(0.09 * i) * std::cos(0.07 * j) + 0.25 * std::sin(0.031 * (i + 2 * j));
+    return h;
+}
+/// The unit square's field placed over [-1, 1]^2, heights from -1 to 1.
+template <class S> Affine<S> hills_placement() {
+    return Affine<S>::scale({2, 2, 2}).then(Affine<S>::translate({-1, -1, -1}));
+}
+template <class S> void height_field_256(benchmark::State& s) {
+    run(s, Transformed<HeightField<S>>(HeightField<S>(256, 256, hills(256)), hills_placement<S>()));
+}
+template <class S> void height_field_256_smooth(benchmark::State& s) {
+    run(s, Transformed<HeightField<S>>(HeightField<S>(256, 256, hills(256), {.smooth = true}), hills_placement<S>()));
+}
+template <class S> void height_field_as_mesh(benchmark::State& s) {  // the same 130,050 triangles in a mesh's BVH
+    const unsigned n = 256;
+    const std::vector<double> h = hills(n);
+    std::vector<Vec3<S>> points;
+    for (unsigned j = 0; j < n; ++j)
+        for (unsigned i = 0; i < n; ++i)
+            points.push_back(hills_placement<S>().point(Vec3<S>(S(double(i) / (n - 1)), S(h[std::size_t(j) * n + i]),
+                                                                S(double(j) / (n - 1)))));
+    std::vector<typename TriangleMesh<S>::Index> tris;
+    for (unsigned j = 0; j + 1 < n; ++j)
+        for (unsigned i = 0; i + 1 < n; ++i) {
+            const auto v = [&](unsigned a, unsigned b) { return std::uint32_t(b * n + a); };
+            tris.push_back({v(i, j), v(i + 1, j), v(i, j + 1)});
+            tris.push_back({v(i + 1, j + 1), v(i, j + 1), v(i + 1, j)});
+        }
+    run(s, TriangleMesh<S>(std::move(points), std::move(tris)));
+}
 
 }  // namespace
 
@@ -200,5 +237,8 @@ PHOTON_SHAPE_BENCH(superellipsoid_star);
 PHOTON_SHAPE_BENCH(lathe_cylinder);
 PHOTON_SHAPE_BENCH(lathe_vase);
 PHOTON_SHAPE_BENCH(sor_vase);
+PHOTON_SHAPE_BENCH(height_field_256);
+PHOTON_SHAPE_BENCH(height_field_256_smooth);
+PHOTON_SHAPE_BENCH(height_field_as_mesh);
 
 BENCHMARK_MAIN();

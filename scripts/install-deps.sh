@@ -12,7 +12,7 @@ set -euo pipefail
 
 purpose=${1:-render}
 # openimageio-tools is needed to build: Debian's OpenImageIO CMake config checks that its tools exist.
-render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev libfreetype-dev)
+render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev libfreetype-dev libpng-dev)
 test=("${render[@]}" catch2 povray povray-examples clang libclang-rt-14-dev)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
 compare=("${render[@]}" povray python3-matplotlib)

@@ -219,7 +219,9 @@ int main(int argc, char** argv) {
         po.image_width = a.width(), po.image_height = a.height();
         po.include_paths = dsl::standard_include_paths();  // as `photon render`: POV-Ray's includes and fonts
         po.diagnostics = [](const dsl::Diagnostic&) {};  // the renders already reported them
-        const auto built = dsl::load_scene<float>(scene_file, po);
+        dsl::BuildOptions bo;  // scenes with image maps and height fields read them as `photon render` does
+        bo.read_image = [](const std::filesystem::path& f, photon::ImageGamma g) { return photon::image_module::read_pixel_grid(f, g); };
+        const auto built = dsl::load_scene<float>(scene_file, po, bo);
         const std::vector<int> label = label_pixels(built, regions, a.width(), a.height());
 
         // Whole image: RMSE over all pixels and channels; PSNR against a peak of 1 W m^-2 sr^-1, the

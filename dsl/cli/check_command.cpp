@@ -3,6 +3,7 @@
 // settings and plan lines that `render` prints too (scene_report.hpp).
 
 #include "commands.hpp"
+#include "load_image_io.hpp"
 #include "scene_report.hpp"
 
 #include <photon/dsl/parser.hpp>
@@ -172,6 +173,7 @@ int run_check(SceneOptions& so) {
     const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
     dsl::BuildOptions bo;
     bo.diagnostics = so.sink();
+    bo.read_image = [](const std::filesystem::path& f, ImageGamma g) { return photon::image_module::read_pixel_grid(f, g); };
     const dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
     report(so.scene, desc, built);
     std::cout << "warnings   " << so.warnings << '\n';

@@ -100,6 +100,7 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     photon::image_module::check_writable_image_path(output);
     dsl::BuildOptions bo;
     bo.diagnostics = so.sink();
+    bo.read_image = [](const std::filesystem::path& f, ImageGamma g) { return photon::image_module::read_pixel_grid(f, g); };
     bo.overrides = ro.overrides;
     // POV-Ray's image_width and image_height are the command line's size when it gives one.
     auto size = [&](const char* key, unsigned otherwise) {

@@ -40,7 +40,10 @@
 #include "material/material.hpp"
 #include "material/scatter.hpp"
 
+#include "texture/bump_map.hpp"
 #include "texture/color_map.hpp"
+#include "texture/image_map.hpp"
+#include "texture/layer_color.hpp"
 #include "texture/noise.hpp"
 #include "texture/normal_field.hpp"
 #include "texture/normal_pattern.hpp"

@@ -14,7 +14,7 @@
 extern "C" {
 
 /// Must equal photon_image_io_abi_version() of the module loaded.
-inline constexpr int photon_image_io_abi = 1;
+inline constexpr int photon_image_io_abi = 2;
 
 using photon_image_io_abi_version_fn = int (*)();
 
@@ -33,5 +33,14 @@ using photon_write_image_fn = int (*)(const char* path, const float* rgb, unsign
 using photon_image_allocate_fn = float* (*)(void* context, unsigned width, unsigned height);
 using photon_read_image_fn = int (*)(const char* path, photon_image_allocate_fn allocate, void* context,
                                      char* error, std::size_t error_size);
+
+/// photon::read_pixel_grid: `gamma_kind` is photon::ImageGamma::Kind as an int (0 file, 1 none,
+/// 2 power, 3 srgb), `gamma` its power. Calls `allocate(context, width, height)` for a buffer of
+/// width x height RGBA quadruples plus a palette index each (5 floats, top row first) it then
+/// fills; sets `*flags` (1: the file has alpha, 2: it is grey, 4: it is a palette image whose
+/// indices are given) and `*max_value` (255, 65535, or 0 for floating point).
+using photon_read_pixel_grid_fn = int (*)(const char* path, int gamma_kind, double gamma,
+                                          photon_image_allocate_fn allocate, void* context, unsigned* flags,
+                                          unsigned* max_value, char* error, std::size_t error_size);
 
 }  // extern "C"

@@ -3,6 +3,7 @@
 // image_io_abi.hpp, loaded at run time by the photon program and its tools.
 
 #include <photon/film/image_io.hpp>
+#include <photon/io/image_file.hpp>
 
 #include <cstring>
 #include <exception>
@@ -71,6 +72,25 @@ __attribute__((visibility("default"))) int photon_read_image(const char* path, p
             float* out = allocate(context, film.width(), film.height());
             for (std::size_t i = 0; i < film.pixels().size(); ++i)
                 for (int c = 0; c < 3; ++c) out[3 * i + c] = film.pixels()[i][c];
+        },
+        error, error_size);
+}
+
+__attribute__((visibility("default"))) int photon_read_pixel_grid(const char* path, int gamma_kind, double gamma,
+                                                                  photon_image_allocate_fn allocate, void* context,
+                                                                  unsigned* flags, unsigned* max_value, char* error,
+                                                                  std::size_t error_size) {
+    return guarded(
+        [&] {
+            const photon::PixelGrid grid =
+                photon::read_pixel_grid(path, photon::ImageGamma{photon::ImageGamma::Kind(gamma_kind), gamma});
+            float* out = allocate(context, grid.width(), grid.height());
+            for (std::size_t i = 0; i < grid.pixels().size(); ++i) {
+                for (std::size_t c = 0; c < 4; ++c) out[5 * i + c] = grid.pixels()[i][c];
+                out[5 * i + 4] = grid.indices.empty() ? 0.0f : float(grid.indices[i]);
+            }
+            *flags = (grid.has_alpha ? 1u : 0u) | (grid.grayscale ? 2u : 0u) | (grid.indices.empty() ? 0u : 4u);
+            *max_value = grid.max_value;
         },
         error, error_size);
 }

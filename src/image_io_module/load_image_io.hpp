@@ -10,6 +10,7 @@
 
 #include <photon/film/film.hpp>
 #include <photon/film/image_write_options.hpp>
+#include <photon/texture/pixel_grid.hpp>
 
 #include <dlfcn.h>
 
@@ -40,6 +41,7 @@ public:
     photon_check_writable_image_fn check_writable = nullptr;
     photon_write_image_fn write = nullptr;
     photon_read_image_fn read = nullptr;
+    photon_read_pixel_grid_fn read_pixels = nullptr;
 
 private:
     ImageIoModule() {
@@ -68,7 +70,9 @@ private:
             check_writable = symbol<photon_check_writable_image_fn>(handle, "photon_check_writable_image");
             write = symbol<photon_write_image_fn>(handle, "photon_write_image");
             read = symbol<photon_read_image_fn>(handle, "photon_read_image");
-            if (version && check_writable && write && read && version() == photon_image_io_abi) return;  // kept loaded
+            read_pixels = symbol<photon_read_pixel_grid_fn>(handle, "photon_read_pixel_grid");
+            if (version && check_writable && write && read && read_pixels && version() == photon_image_io_abi)
+                return;  // kept loaded
             tried += "\n  " + place.string() + ": not photon's image module of this version";
             ::dlclose(handle);
         }
@@ -121,6 +125,37 @@ inline Film read_image(const std::filesystem::path& path) {
     for (std::size_t i = 0; i < film.pixels().size(); ++i)
         film.pixels()[i] = Rgb<float>(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]);
     return film;
+}
+
+/// photon::read_pixel_grid (photon/io/image_file.hpp), through the module.
+inline PixelGrid read_pixel_grid(const std::filesystem::path& path, ImageGamma gamma = {}) {
+    struct Target {
+        unsigned width = 0, height = 0;
+        std::vector<float> rgba;
+    } target;
+    const photon_image_allocate_fn allocate = [](void* context, unsigned width, unsigned height) -> float* {
+        auto* t = static_cast<Target*>(context);
+        t->width = width, t->height = height;
+        t->rgba.assign(5 * std::size_t(width) * height, 0.0f);
+        return t->rgba.data();
+    };
+    unsigned flags = 0, max_value = 0;
+    char error[1024] = "";
+    if (ImageIoModule::get().read_pixels(path.c_str(), int(gamma.kind), gamma.gamma, allocate, &target, &flags,
+                                         &max_value, error, sizeof error) != 0)
+        throw ImageError(error);
+    std::vector<PixelGrid::Pixel> pixels(std::size_t(target.width) * target.height);
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        pixels[i] = {target.rgba[5 * i], target.rgba[5 * i + 1], target.rgba[5 * i + 2], target.rgba[5 * i + 3]};
+    PixelGrid grid(target.width, target.height, std::move(pixels));
+    if (flags & 4u) {
+        grid.indices.resize(grid.pixels().size());
+        for (std::size_t i = 0; i < grid.indices.size(); ++i) grid.indices[i] = std::uint8_t(target.rgba[5 * i + 4]);
+    }
+    grid.has_alpha = (flags & 1u) != 0;
+    grid.grayscale = (flags & 2u) != 0;
+    grid.max_value = max_value;
+    return grid;
 }
 
 }  // namespace photon::image_module

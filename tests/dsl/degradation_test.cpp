@@ -150,13 +150,17 @@ TEST_CASE("declared maps, pigment_map, average and image_map", "[dsl][degradatio
     check_rgb(first_color("pigment { average pigment_map { [1 rgb x] [3 rgb z] } }"), 0.25, 0, 0.75);
     check_rgb(first_color("pigment { gradient x pigment_map { [0 rgb 0] [1 checker rgb 1, rgb 1] } }"), 0.5, 0.5,
               0.5);
+    // A sandbox reads no files: the image is recorded as named, not looked for.
+    dsl::ParseOptions sandbox;
+    sandbox.read_include = [](const std::string&) { return std::optional<std::string>{}; };
     const Parsed p = parse(std::string(lit) +
                            "#declare M = color_map { [0 rgb 0] [1 rgb <1, 0, 0>] }\n"
                            "#declare PM = pigment_map { [0 rgb 1] [1 rgb 1] }\n"
                            "#declare N = normal_map { [0 bumps 0.5] [1 dents 0.2 scale 2] }\n"
                            "sphere { 0, 1 pigment { onion color_map { M } } }\n"
                            "sphere { 0, 1 pigment { leopard pigment_map { PM } } normal { bumps normal_map { N } } }\n"
-                           "sphere { 0, 1 pigment { image_map { png \"wall.png\" map_type 1 once } } }\n");
+                           "sphere { 0, 1 pigment { image_map { png \"wall.png\" map_type 1 once } turbulence 0.5 } }\n",
+                           sandbox);
     REQUIRE(p.desc.objects.size() == 4);
     check_rgb(p.desc.objects[1].texture->pigment.color.rgb, 0.5, 0, 0);
     check_rgb(p.desc.objects[2].texture->pigment.color.rgb, 1, 1, 1);
@@ -165,7 +169,7 @@ TEST_CASE("declared maps, pigment_map, average and image_map", "[dsl][degradatio
     CHECK(places(p.warnings, "approximated pigment") == std::vector<std::string>{"8:25 image_map"});
     CHECK(p.desc.objects[1].texture->pigment.pattern != nullptr);
     CHECK(p.desc.objects[2].texture->pigment.pattern != nullptr);
-    CHECK_THAT(all_messages(p.warnings), Contains("`image_map` is approximated by mid grey"));
+    CHECK_THAT(all_messages(p.warnings), Contains("`image_map` is approximated by mid grey") && Contains("turbulence"));
     CHECK_THAT(error_of("#declare M = color_map { [0 rgb 1] }\nsphere { 0, 1 pigment { bozo pigment_map { M } } }"),
                Contains("2:44: expected a pigment_map identifier, found `M` (a color_map, declared at 1:10)"));
 }
@@ -254,16 +258,22 @@ TEST_CASE("camera types and lights photon lacks are approximated", "[dsl][degrad
 }
 
 TEST_CASE("every form of normal parses, and those photon cannot evaluate are ignored", "[dsl][degradation]") {
+    dsl::ParseOptions sandbox;  // reads no files: the bump map's image is recorded as named
+    sandbox.read_include = [](const std::string&) { return std::optional<std::string>{}; };
     const Parsed p = parse(std::string(lit) +
                            "#declare N = normal { wrinkles 0.3 scale 0.2 }\n"
                            "sphere { 0, 1 normal { N } }\n"
                            "sphere { 0, 1 normal { bump_map { png \"b.png\" bump_size 2 } } }\n"
                            "sphere { 0, 1 normal { gradient x normal_map { [0 bumps 1] [1 granite 0.2] } } }\n"
-                           "sphere { 0, 1 normal { facets coords 0.5 slope_map { [0 <0, 1>] } } }\n");
+                           "sphere { 0, 1 normal { facets coords 0.5 slope_map { [0 <0, 1>] } } }\n",
+                           sandbox);
     INFO(all_messages(p.warnings));
     CHECK(places(p.warnings, "ignored effect") ==
-          std::vector<std::string>{"5:24 normal", "6:24 normal", "7:24 normal"});  // bump_map, normal_map, facets
+          std::vector<std::string>{"6:24 normal", "7:24 normal"});  // normal_map, facets
     CHECK(p.desc.objects.size() == 5);
+    REQUIRE(p.desc.objects[2].texture->normal);
+    CHECK(p.desc.objects[2].texture->normal->pattern->name == "bump_map");  // read, built with its image
+    CHECK(p.desc.objects[2].texture->normal->amount == 2);
     REQUIRE(p.desc.objects[1].texture->normal);
     CHECK(p.desc.objects[1].texture->normal->pattern->name == "wrinkles");
     CHECK(p.desc.objects[1].texture->normal->amount == 0.3);

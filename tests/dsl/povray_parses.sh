@@ -14,7 +14,8 @@ name=$(basename "$scene" .pov)-$(basename "$header" .inc)
 # Run from the work directory: POV-Ray writes nothing else, and #include must not depend on it.
 cd "$work" || exit 1
 run() {
-    povray -D +W16 +H12 +HI"$header" +FE +O"$work/$name.exr" "$scene" >"$work/$name.log" 2>&1
+    # +L: files the scene names (images) are found beside it, as photon finds them.
+    povray -D +W16 +H12 +HI"$header" +L"$(dirname "$scene")" +FE +O"$work/$name.exr" "$scene" >"$work/$name.log" 2>&1
     rc=$?
 }
 run

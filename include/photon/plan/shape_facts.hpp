@@ -18,6 +18,7 @@
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
 #include "../geometry/lathe.hpp"
+#include "../geometry/height_field.hpp"
 #include "../geometry/plane.hpp"
 #include "../geometry/polygon.hpp"
 #include "../geometry/polynomial_surface.hpp"
@@ -80,6 +81,7 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Superellipsoid<S>>) return "superellipsoid";
     else if constexpr (std::is_same_v<Shape, Lathe<S>>) return "lathe";
     else if constexpr (std::is_same_v<Shape, Sor<S>>) return shape.open() ? "open sor" : "sor";
+    else if constexpr (std::is_same_v<Shape, HeightField<S>>) return "height field";
     else return "object";
 }
 

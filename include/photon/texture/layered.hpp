@@ -19,26 +19,11 @@
 #include <vector>
 
 #include "../math/vec.hpp"
+#include "image_map.hpp"
+#include "layer_color.hpp"
 #include "pigment.hpp"
 
 namespace photon {
-
-/// A colour with POV-Ray's filter (see-through tinted by the colour) and transmit (see-through
-/// untinted), each >= 0 with filter + transmit <= 1.
-template <Scalar S> struct LayerColor {
-    Rgb<S> color{S(0)};
-    S filter = S(0), transmit = S(0);
-
-    /// The share of the layer's own colour: POV-Ray 3.7's opacity.
-    [[nodiscard]] S opacity() const noexcept { return S(1) - filter - transmit; }
-    /// What the layer lets through of the light from below (POV-Ray's TransmittedColour).
-    [[nodiscard]] Rgb<S> passed() const noexcept { return filter * color + Rgb<S>(transmit); }
-};
-
-/// A layer's filter and transmit, one per colour map entry.
-template <Scalar S> struct FilterTransmit {
-    S filter = S(0), transmit = S(0);
-};
 
 /// Per channel, the most a layer's colours reach: of colour, of opacity, of colour * opacity (its
 /// own share) and of passed(), each on its own (a bound, not one colour).
@@ -83,8 +68,16 @@ public:
         if (std::any_of(nested.begin(), nested.end(), [](const auto& n) { return n != nullptr; })) nested_ = std::move(nested);
     }
 
+    /// An image map: its pixels' colours, filter and transmit. Throws std::invalid_argument on a
+    /// null image or a weight that is not finite and >= 0.
+    PigmentLayer(std::shared_ptr<const ImageMap<S>> image, const Rgb<S>& weight) : weight_(weight), image_(std::move(image)) {
+        if (!image_) throw std::invalid_argument("layered texture: the image map is missing");
+        check();
+    }
+
     /// The layer's colour, filter and transmit at world point `p`.
     [[nodiscard]] LayerColor<S> operator()(const Vec3<S>& p) const noexcept {
+        if (image_) return image_->layer(p);
         if (!pigment_) return entries_.front();
         const auto where = pigment_->colors().locate(pigment_->value(p));
         const LayerColor<S> a = entry(where.prev, p);
@@ -95,6 +88,7 @@ public:
     /// The most this layer's colours reach, per channel (exact at the entries; between two
     /// entries of which one is nested, colour times opacity is bounded by their maxima's product).
     [[nodiscard]] LayerEnvelope<S> envelope() const noexcept {
+        if (image_) return image_envelope();
         LayerEnvelope<S> env;
         const auto of = [&](std::size_t i) {
             if (has_nested() && nested_[i]) return nested_[i]->envelope();
@@ -127,7 +121,9 @@ public:
     [[nodiscard]] const Rgb<S>& weight() const noexcept { return weight_; }
     /// The colours the layer blends between (one for a uniform layer).
     [[nodiscard]] const std::vector<LayerColor<S>>& entries() const noexcept { return entries_; }
-    [[nodiscard]] bool is_uniform() const noexcept { return !pigment_; }
+    [[nodiscard]] bool is_uniform() const noexcept { return !pigment_ && !image_; }
+    /// The layer is an image map (entries() is then empty).
+    [[nodiscard]] bool is_image() const noexcept { return image_ != nullptr; }
 
     [[nodiscard]] static LayerColor<S> blend(const LayerColor<S>& a, const LayerColor<S>& b, S fraction) noexcept {
         return {a.color + fraction * (b.color - a.color), a.filter + fraction * (b.filter - a.filter),
@@ -146,6 +142,23 @@ private:
         }
     }
 
+    /// Over the image's pixels (and the clear white outside a `once` image). Interpolation blends
+    /// up to four pixels: colour, opacity and passed() stay below their maxima, colour times
+    /// opacity below the product of those.
+    [[nodiscard]] LayerEnvelope<S> image_envelope() const noexcept {
+        LayerEnvelope<S> env;
+        const ImageMap<S>& m = *image_;
+        const auto add = [&](const LayerColor<S>& c) {
+            const Rgb<S> o(c.opacity());
+            env.include({c.color, o, c.color * o, c.passed()});
+        };
+        for (unsigned y = 0; y < m.image().height(); ++y)
+            for (unsigned x = 0; x < m.image().width(); ++x) add(m.sample(x + 0.5, y + 0.5));
+        if (m.options().once) add({Rgb<S>(S(1)), S(0), S(1)});
+        if (m.options().interpolate != ImageInterpolation::none) env.tinted = env.color * env.opacity;
+        return env;
+    }
+
     [[nodiscard]] LayerColor<S> entry(std::size_t i, const Vec3<S>& p) const noexcept {
         return has_nested() && nested_[i] ? (*nested_[i])(p) : entries_[i];
     }
@@ -154,6 +167,7 @@ private:
     std::vector<LayerColor<S>> entries_;
     std::vector<std::shared_ptr<const PigmentLayer>> nested_;  ///< empty, or one per entry (null: the colour)
     Rgb<S> weight_;
+    std::shared_ptr<const ImageMap<S>> image_;  ///< set: the layer is this image map
 };
 
 /// Layers composed into one reflectance: a ReflectanceField (reflectance_field.hpp).
@@ -195,7 +209,7 @@ private:
     [[nodiscard]] Rgb<S> compute_bound() const noexcept {
         Rgb<S> below(S(0));
         for (const PigmentLayer<S>& layer : layers_) {
-            if (layer.has_nested()) {  // each term at its own maximum: a bound
+            if (layer.has_nested() || layer.is_image()) {  // each term at its own maximum: a bound
                 const LayerEnvelope<S> env = layer.envelope();
                 below = env.tinted * layer.weight() + env.passed * below;
                 continue;

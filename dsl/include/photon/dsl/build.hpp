@@ -25,6 +25,7 @@
 #include "build/warnings.hpp"
 #include "description.hpp"
 #include "diagnostics.hpp"
+#include "image_files.hpp"
 
 namespace photon::dsl {
 
@@ -34,6 +35,10 @@ struct BuildOptions {
     /// Objects and mesh triangles in the scene, the mesh files' triangles counted for every use
     /// (the parser bounds the rest with ParseOptions::max_primitives, the same default).
     std::size_t max_primitives = 10'000'000;
+    /// Reads the image files of image maps, bump maps and height fields; unset, a scene naming
+    /// one is an error at its name. Programs linking OpenImageIO pass photon::read_pixel_grid
+    /// (photon/io/image_file.hpp); the photon program reads through its image module.
+    ImageReader read_image;
 };
 
 template <Scalar S>
@@ -51,7 +56,8 @@ struct BuiltScene {
 template <Scalar S>
 [[nodiscard]] BuiltScene<S> build(const SceneDescription& desc, const BuildOptions& options = {}) {
     Warnings warn(options.diagnostics);
-    detail::Builder<S> builder(desc, warn, options.max_primitives);
+    ImageFiles images(options.read_image, ImageDecoding{desc.settings.assumed_gamma, desc.version});
+    detail::Builder<S> builder(desc, warn, options.max_primitives, images);
     builder.read_files();
     RenderSettings settings = render_settings(desc, options.overrides, warn);
     CameraDescription cam;
@@ -74,7 +80,7 @@ template <Scalar S>
         throw Error(cam.at.known() ? cam.at : desc.at, e.what());
     }
     DefaultScene<S> scene;
-    if (auto sky = build_environment<S>(desc, warn)) scene.set_environment(std::move(*sky));
+    if (auto sky = build_environment<S>(desc, warn, &images)) scene.set_environment(std::move(*sky));
     for (const Fog<S>& fog : build_fogs<S>(desc)) scene.add_fog(fog);
     builder.add_all(scene);
     scene.commit();

@@ -110,8 +110,32 @@ inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient",
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).
 struct Pigment;
 
+/// An image file a scene names (image_map, bump_map, height_field): where the parser found it
+/// (beside the scene or on the include path) and how its samples are decoded.
+struct ImageFile {
+    std::filesystem::path path;
+    std::string written;  ///< the name as the scene writes it
+    std::string type;     ///< the keyword before it: png, jpeg, gif, tga, ppm, pgm, tiff, exr, hdr, sys, iff
+    /// `gamma G` (decoding gamma), `gamma srgb` (0), or none: the file's own (io/image_file.hpp).
+    std::optional<double> gamma;
+    SourceLocation at;  ///< where the name is written
+};
+
+/// `image_map { FILE ... }` (and `bump_map { FILE ... }`) as photon evaluates it (texture/image_map.hpp gives each field's meaning).
+struct ImageMapDesc {
+    ImageFile file;
+    int map_type = 0;     ///< 0 planar, 1 spherical, 2 cylindrical, 5 torus
+    int interpolate = 0;  ///< 0 none, 2 bilinear, 4 normalized distance
+    bool once = false;
+    double filter_all = 0, transmit_all = 0;
+    bool use_index = false;  ///< bump_map's `use_index`: a palette image's indices are the heights
+    /// `filter N, F` and `transmit N, T` of palette entries, as written (photon reads a palette
+    /// image as its colours: ignored, with a warning).
+    std::vector<std::pair<int, double>> filter_index, transmit_index;
+};
+
 struct PigmentPattern {
-    std::string name;                ///< one of evaluated_patterns
+    std::string name;                ///< one of evaluated_patterns, or image_map
     Vector3 gradient{1, 0, 0};       ///< `gradient V`
     double agate_turb = 1;           ///< `agate_turb`
     Vector3 crackle_form{-1, 1, 0};  ///< crackle's `form`
@@ -129,6 +153,9 @@ struct PigmentPattern {
     /// A pigment_map's patterned entries, one per colour (null where the entry is a colour); empty
     /// when none is patterned. `colors` then holds each entry's average colour.
     std::vector<std::shared_ptr<const Pigment>> nested;
+    /// image_map's image and options (`colors` then holds one entry, the filter and transmit
+    /// `all` on mid grey, which stands for the image where one colour must).
+    std::shared_ptr<const ImageMapDesc> image;
 
     friend bool operator==(const PigmentPattern&, const PigmentPattern&) = default;
 };
@@ -140,7 +167,8 @@ inline constexpr std::string_view normal_patterns[] = {"bumps", "dents", "ripple
 /// `normal { PATTERN [AMOUNT] MODIFIERS }` as photon evaluates it: the pattern with its modifiers
 /// (`colors` unused), its bump size and accuracy, and its placement, composed like a pigment's.
 struct Normal {
-    std::shared_ptr<const PigmentPattern> pattern;  ///< name: one of normal_patterns or evaluated_patterns
+    /// name: one of normal_patterns or evaluated_patterns, or bump_map (its image in `image`)
+    std::shared_ptr<const PigmentPattern> pattern;
     double amount = 0.5;                            ///< the number after the pattern, or `bump_size`
     double accuracy = 0.02;                         ///< `accuracy` (a slope's tetrahedron size)
     Transform transform;                            ///< pattern space to the object's parent's space
@@ -391,6 +419,13 @@ struct TextShape {
     double thickness = 1;
     Vector3 offset{0.0};
 };
+/// `height_field { FILE [smooth] [water_level F] }`: the image's heights over the unit square
+/// (geometry/height_field.hpp), read in the build step.
+struct HeightFieldShape {
+    ImageFile file;
+    bool smooth = false;
+    double water_level = 0;
+};
 /// An OBJ file named in a mesh (`mesh { obj "file.obj" }`). The parser only records it; the build
 /// step reads it (mesh_files.hpp), so that reading a scene never opens a mesh file.
 struct MeshFile {
@@ -427,7 +462,7 @@ struct SkippedShape {
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
                            SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape, QuadricShape,
                            PolygonShape, PrismShape, TextShape, PolynomialShape, SuperellipsoidShape, LatheShape,
-                           SorShape>;
+                           SorShape, HeightFieldShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -473,7 +508,8 @@ struct Object {
 [[nodiscard]] inline const char* keyword(const Shape& s) noexcept {
     constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
                                      "light_source", "",    "",      "cylinder", "cone", "disc", "torus",
-                                     "quadric",      "polygon", "prism", "text", "poly", "superellipsoid", "lathe", "sor"};
+                                     "quadric",      "polygon", "prism", "text", "poly", "superellipsoid", "lathe", "sor",
+                                     "height_field"};
     static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);

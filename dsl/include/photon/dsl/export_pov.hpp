@@ -246,6 +246,11 @@ private:
 
     /// PIGMENT_BODY: the pattern, its colours or pigment_map, its modifiers and its placement.
     void pigment_body(const PigmentPattern& p, const Transform& placement) {
+        if (p.image) {
+            image_map(*p.image);
+            placement_matrix(placement);
+            return;
+        }
         out_ << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
         if (p.name == "checker" || p.name == "hexagon") {  // listed colours
@@ -269,6 +274,20 @@ private:
         }
         pattern_modifiers(p);
         placement_matrix(placement);
+    }
+
+    /// IMAGE_MAP with the file where the parser found it, its gamma and its options.
+    void image_map(const ImageMapDesc& m) {
+        out_ << "image_map { " << m.file.type << ' ' << quoted(m.file.path.string());
+        if (m.file.gamma) out_ << " gamma " << (*m.file.gamma == 0 ? std::string("srgb") : num(*m.file.gamma));
+        if (m.map_type != 0) out_ << " map_type " << m.map_type;
+        if (m.interpolate != 0) out_ << " interpolate " << m.interpolate;
+        if (m.once) out_ << " once";
+        if (m.filter_all != 0) out_ << " filter all " << num(m.filter_all);
+        if (m.transmit_all != 0) out_ << " transmit all " << num(m.transmit_all);
+        for (const auto& [i, v] : m.filter_index) out_ << " filter " << i << ", " << num(v);
+        for (const auto& [i, v] : m.transmit_index) out_ << " transmit " << i << ", " << num(v);
+        out_ << " }";
     }
 
     /// The modifiers of an evaluated pattern that differ from POV-Ray's defaults.
@@ -301,6 +320,19 @@ private:
     /// A normal photon evaluates: its pattern, bump size, modifiers, accuracy and transformation.
     void normal(const Normal& n) {
         const PigmentPattern& p = *n.pattern;
+        if (p.image) {  // bump_map { FILE OPTIONS bump_size F }
+            const ImageMapDesc& m = *p.image;
+            out_ << "normal { bump_map { " << m.file.type << ' ' << quoted(m.file.path.string());
+            if (m.file.gamma) out_ << " gamma " << (*m.file.gamma == 0 ? std::string("srgb") : num(*m.file.gamma));
+            if (m.map_type != 0) out_ << " map_type " << m.map_type;
+            if (m.interpolate != 0) out_ << " interpolate " << m.interpolate;
+            if (m.once) out_ << " once";
+            if (m.use_index) out_ << " use_index";
+            out_ << " bump_size " << num(n.amount) << " }";
+            placement_matrix(n.transform);
+            out_ << " }\n";
+            return;
+        }
         out_ << "normal { " << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
         out_ << " bump_size " << num(n.amount);
@@ -452,6 +484,12 @@ private:
             out_ << "sor { " << so->points->size();
             for (const glm::dvec2& point : *so->points) out_ << ", <" << num(point.x) << ", " << num(point.y) << ">";
             out_ << (so->open ? " open" : "") << '\n';
+        } else if (const auto* hf = std::get_if<HeightFieldShape>(&o.shape)) {
+            out_ << "height_field { " << hf->file.type << ' ' << quoted(hf->file.path.string());
+            if (hf->file.gamma) out_ << " gamma " << (*hf->file.gamma == 0 ? std::string("srgb") : num(*hf->file.gamma));
+            if (hf->smooth) out_ << " smooth";
+            if (hf->water_level != 0) out_ << " water_level " << num(hf->water_level);
+            out_ << '\n';
         } else if (const auto* x = std::get_if<TextShape>(&o.shape)) {
             out_ << "text { ttf " << quoted(x->font.path.string()) << ' ' << quoted(x->text) << ' ' << num(x->thickness) << ", "
                  << vec(x->offset) << '\n';

@@ -43,7 +43,9 @@ inline DefaultScene<double> scene_of(const Object& obj) {
     desc.at = obj.at;
     Warnings quiet(nullptr);
     DefaultScene<double> scene;
-    Builder<double> builder(desc, quiet, BuildOptions{}.max_primitives);
+    // Colours do not change the geometry: image maps are read as one grey pixel here.
+    ImageFiles images(nullptr, {}, ImageFiles::colours_as_grey);
+    Builder<double> builder(desc, quiet, BuildOptions{}.max_primitives, images);
     builder.read_files();
     builder.add_all(scene);
     scene.commit();

@@ -57,6 +57,7 @@ namespace photon::dsl {
 #include "parser/transforms.hpp"
 #include "parser/degradation.hpp"
 #include "parser/patterns.hpp"
+#include "parser/images.hpp"
 #include "parser/materials.hpp"
 #include "parser/normals.hpp"
 #include "parser/objects.hpp"

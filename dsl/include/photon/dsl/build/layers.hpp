@@ -24,6 +24,7 @@
 #include <photon/texture/normal_field.hpp>
 
 #include "../description.hpp"
+#include "../image_files.hpp"
 #include "../physical_ranges.hpp"
 #include "material.hpp"
 #include "normal.hpp"
@@ -77,7 +78,8 @@ inline SourceLocation finish_item(const Finish& f, const char* key, const Source
 /// then `placement` (POV-Ray transforms a map's pigments with the pigment that holds them).
 template <Scalar S>
 PigmentLayer<S> pattern_layer(const PigmentPattern& pattern, const Transform& placement, const Vector3& weight,
-                              Warnings& warn, const SourceLocation& at) {
+                              Warnings& warn, const SourceLocation& at, ImageFiles* images = nullptr) {
+    if (pattern.image) return PigmentLayer<S>(image_map<S>(*pattern.image, placement, images), Rgb<S>(weight));
     std::vector<typename ColorMap<S>::Entry> entries;
     std::vector<FilterTransmit<S>> clear;
     for (const auto& [v, written] : pattern.colors) {
@@ -94,7 +96,7 @@ PigmentLayer<S> pattern_layer(const PigmentPattern& pattern, const Transform& pl
     std::vector<std::shared_ptr<const PigmentLayer<S>>> nested;
     for (const auto& n : pattern.nested)
         nested.push_back(n ? std::make_shared<const PigmentLayer<S>>(pattern_layer<S>(
-                                 *n->pattern, n->transform.then(placement), Vector3(1.0), warn, n->at.known() ? n->at : at))
+                                 *n->pattern, n->transform.then(placement), Vector3(1.0), warn, n->at.known() ? n->at : at, images))
                            : nullptr);
     return PigmentLayer<S>(std::move(pigment), clear, std::move(nested), Rgb<S>(weight));
 }
@@ -103,14 +105,14 @@ PigmentLayer<S> pattern_layer(const PigmentPattern& pattern, const Transform& pl
 /// transformations then `to_world`, and `weight`.
 template <Scalar S>
 PigmentLayer<S> library_layer(const Texture& t, const Transform& to_world, const Vector3& weight, Warnings& warn,
-                              const SourceLocation& at) {
+                              const SourceLocation& at, ImageFiles* images = nullptr) {
     if (!t.pigment.pattern) {
         const Clamped<Color> p = physical_pigment(t.pigment.color);
         if (!p.message.empty()) warn(at, p.message, "approximated pigment", "pigment");
         const Color& c = p.value;
         return PigmentLayer<S>(LayerColor<S>{Rgb<S>(c.rgb), S(c.filter), S(c.transmit)}, Rgb<S>(weight));
     }
-    return pattern_layer<S>(*t.pigment.pattern, t.pigment.transform.then(to_world), weight, warn, at);
+    return pattern_layer<S>(*t.pigment.pattern, t.pigment.transform.then(to_world), weight, warn, at, images);
 }
 
 }  // namespace layers_detail
@@ -122,7 +124,7 @@ template <Scalar S>
 [[nodiscard]] MaterialParams<S> layered_material_params(const Texture& tex, const Transform& to_world,
                                                         const Interior* interior, const GlobalSettings& global,
                                                         std::optional<double> version, Warnings& warn,
-                                                        const SourceLocation& object = {}) {
+                                                        const SourceLocation& object = {}, ImageFiles* images = nullptr) {
     using namespace layers_detail;
     std::vector<const Texture*> stack{&tex};  // bottom first
     for (const Texture& t : tex.layers) stack.push_back(&t);
@@ -174,8 +176,8 @@ template <Scalar S>
                      "uses rgb " + rgb_text(glow),
                  "approximated finish", "ambient");
         glows = glows || glow != Vector3(0.0);
-        diffuse_layers.push_back(library_layer<S>(*t, to_world, Vector3(t->finish.diffuse), warn, pigment_place(*t)));
-        glow_layers.push_back(library_layer<S>(*t, to_world, glow, warn, pigment_place(*t)));
+        diffuse_layers.push_back(library_layer<S>(*t, to_world, Vector3(t->finish.diffuse), warn, pigment_place(*t), images));
+        glow_layers.push_back(library_layer<S>(*t, to_world, glow, warn, pigment_place(*t), images));
     }
     // Highlights: each layer that has one adds it dimmed by the layers above; exact as one
     // weighted highlight when they all share it and none is metallic.
@@ -212,7 +214,7 @@ template <Scalar S>
     const auto normal = topmost([](const Texture& t) { return t.normal && t.normal->pattern; });
     if (normal) {
         const Normal& n = *stack[*normal]->normal;
-        p.normal_field = AnyNormalField<S>(library_normal<S>(n, n.transform.then(to_world)));
+        p.normal_field = library_normal_field<S>(n, n.transform.then(to_world), images);
     }
 
     // What photon approximates.

@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include <photon/texture/bump_map.hpp>
+#include <photon/texture/normal_field.hpp>
 #include <photon/texture/normal_pattern.hpp>
 
 #include "../description.hpp"
@@ -32,6 +34,21 @@ template <Scalar S>
     a.linear = placement.linear;
     a.translation = placement.translation;
     return NormalPerturbation<S>(std::move(np), a);
+}
+
+/// The normal as the library's normal field: a bump map (its image read through `images`, a
+/// located error without them) or library_normal's perturbation.
+template <Scalar S>
+[[nodiscard]] AnyNormalField<S> library_normal_field(const Normal& n, const Transform& placement, ImageFiles* images) {
+    if (!n.pattern->image) return AnyNormalField<S>(library_normal<S>(n, placement));
+    const ImageMapDesc& m = *n.pattern->image;
+    if (!images) throw Error(m.file.at, "bump maps are not read here (no image files were given to this build)");
+    Affine<double> a;
+    a.linear = placement.linear;
+    a.translation = placement.translation;
+    const ImageMapOptions mapping{.map_type = ImageMapType(m.map_type), .interpolate = ImageInterpolation(m.interpolate),
+                                  .once = m.once};
+    return AnyNormalField<S>(ImageBumpMap<S>(images->grid(m.file, false), mapping, n.amount, m.use_index, a));
 }
 
 }  // namespace photon::dsl

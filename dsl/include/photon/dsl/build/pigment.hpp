@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <string>
 
+#include <photon/texture/image_map.hpp>
 #include <photon/texture/pigment.hpp>
 
 #include "../description.hpp"
+#include "../image_files.hpp"
 #include "../physical_ranges.hpp"
 
 namespace photon::dsl {
@@ -36,8 +38,9 @@ namespace photon::dsl {
 }
 
 /// The largest albedo_color of the pattern's colours, per channel (of a pigment_map's
-/// patterned entries, theirs).
+/// patterned entries, theirs; of an image, 1: image files hold colours up to 1).
 [[nodiscard]] inline Vector3 max_albedo_color(const PigmentPattern& p) {
+    if (p.image) return Vector3(1.0);
     Vector3 m(0.0);
     for (std::size_t i = 0; i < p.colors.size(); ++i)
         m = glm::max(m, i < p.nested.size() && p.nested[i] ? max_albedo_color(*p.nested[i]->pattern)
@@ -63,6 +66,23 @@ namespace photon::dsl {
     for (const auto& [n, w] : waves)
         if (p.wave == n) out.wave.type = w;
     return out;
+}
+
+/// image_map as the library's ImageMap, its pixels read through `images` (a located error when
+/// none is given or the file cannot be read); `placement` maps the image's space to the world.
+template <Scalar S>
+[[nodiscard]] std::shared_ptr<const ImageMap<S>> image_map(const ImageMapDesc& m, const Transform& placement,
+                                                           ImageFiles* images) {
+    if (!images) throw Error(m.file.at, "image maps are not read here (no image files were given to this build)");
+    Affine<double> a;
+    a.linear = placement.linear;
+    a.translation = placement.translation;
+    const ImageMapOptions options{.map_type = ImageMapType(m.map_type),
+                                  .interpolate = ImageInterpolation(m.interpolate),
+                                  .once = m.once,
+                                  .filter_all = m.filter_all,
+                                  .transmit_all = m.transmit_all};
+    return std::make_shared<const ImageMap<S>>(images->grid(m.file, true), options, a);
 }
 
 [[nodiscard]] inline Pattern library_pattern(const PigmentPattern& p) {

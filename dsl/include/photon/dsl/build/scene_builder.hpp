@@ -65,8 +65,8 @@ inline bool keeps_axes(const glm::dmat3& m) {
 template <Scalar S>
 class Builder {
 public:
-    Builder(const SceneDescription& desc, Warnings& warn, std::size_t max_primitives)
-        : desc_(desc), warn_(warn), max_primitives_(max_primitives),
+    Builder(const SceneDescription& desc, Warnings& warn, std::size_t max_primitives, ImageFiles& images)
+        : desc_(desc), warn_(warn), max_primitives_(max_primitives), images_(images),
           mesh_files_([&warn](const SourceLocation& at, const std::string& m) { warn(at, m); }) {}
 
     void add_all(DefaultScene<S>& scene) {
@@ -375,6 +375,11 @@ private:
         place(text, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
     }
+    std::optional<DefaultCsg<S>> csg_leaf(const HeightFieldShape& g, const Transform& t) {
+        std::optional<DefaultCsg<S>> leaf;
+        place(g, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
+        return leaf;
+    }
     std::optional<DefaultCsg<S>> csg_leaf(const QuadricShape& q, const Transform& t) {
         std::optional<DefaultCsg<S>> leaf;
         place(q, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
@@ -388,7 +393,8 @@ private:
                std::is_same_v<Shape, CylinderShape> || std::is_same_v<Shape, ConeShape> || std::is_same_v<Shape, TorusShape> ||
                std::is_same_v<Shape, QuadricShape> || std::is_same_v<Shape, PrismShape> || std::is_same_v<Shape, TextShape> ||
                std::is_same_v<Shape, PolynomialShape> || std::is_same_v<Shape, SuperellipsoidShape> ||
-               std::is_same_v<Shape, LatheShape> || std::is_same_v<Shape, SorShape>;
+               std::is_same_v<Shape, LatheShape> || std::is_same_v<Shape, SorShape> ||
+               std::is_same_v<Shape, HeightFieldShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -482,6 +488,18 @@ private:
                          false},
               turn.then(t), f);
     }
+    /// The height field placed: always Transformed (HeightField lies over the unit square), its
+    /// heights read from the image as POV-Ray reads them. Geometry queries without an image
+    /// reader (object_geometry.hpp) place nothing.
+    template <class F> void place(const HeightFieldShape& g, const Transform& t, F&& f) {
+        if (!images_.reads()) return;
+        const auto image = images_.grid(g.file, false);
+        if (image->width() < 2 || image->height() < 2)
+            throw Error(g.file.at, "a height field's image needs at least 2 x 2 pixels");
+        f(Transformed<HeightField<S>>(HeightField<S>(image->width(), image->height(), height_field_heights(*image),
+                                                     {.smooth = g.smooth, .water_level = g.water_level}),
+                                      to_affine<S>(t)));
+    }
     /// The quadric placed: its transformation folded into its numbers (in double, also for float);
     /// with no quadratic term, the plane (half-space) it is. Handed to `f`.
     template <class F> void place(const QuadricShape& q, const Transform& t, F&& f) {
@@ -571,6 +589,9 @@ private:
     void add_shape(const TextShape& text, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(text, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
+    void add_shape(const HeightFieldShape& g, const Transform& t, MaterialId m, ObjectOptions opt) {
+        place(g, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
+    }
     void add_shape(const QuadricShape& q, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(q, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
@@ -607,12 +628,14 @@ private:
         try {
             // A pigment_map of patterned pigments: one layer (its colour times its opacity, as
             // library_pigment's albedos) whose entries nest.
-            if (pattern && !pattern->nested.empty())
+            if (pattern && pattern->image) warn_image_clearness(*pattern->image, tex);
+            // So is an image map: its pixels' colour times their opacity.
+            if (pattern && (!pattern->nested.empty() || pattern->image))
                 p.diffuse_texture = AnyReflectanceField<S>(LayeredPigment<S>(
-                    {layers_detail::pattern_layer<S>(*pattern, placement, Vector3(1.0), warn_, at)}));
+                    {layers_detail::pattern_layer<S>(*pattern, placement, Vector3(1.0), warn_, at, &images_)}));
             else if (pattern)
                 p.diffuse_texture = AnyReflectanceField<S>(library_pigment<S>(*pattern, placement));
-            if (normal) p.normal_field = AnyNormalField<S>(library_normal<S>(*normal, in.normal_placement));
+            if (normal) p.normal_field = library_normal_field<S>(*normal, in.normal_placement, &images_);
             const MaterialId id = scene_->add_material(Material<S>(p));
             materials_.push_back({p, pattern, placement, made_normal, id});
             return id;
@@ -628,13 +651,28 @@ private:
         const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
         try {
             const MaterialParams<S> p = layered_material_params<S>(tex, in.texture_world, in.interior, desc_.settings,
-                                                                   desc_.version, warn_, o.at);
+                                                                   desc_.version, warn_, o.at, &images_);
             const MaterialId id = scene_->add_material(Material<S>(p));
             layered_.push_back({&tex, in.interior, in.texture_world, id});
             return id;
         } catch (const std::invalid_argument& e) {
             throw Error(at, e.what());
         }
+    }
+    /// A single texture's transmission is one value everywhere (its pigment's average colour's):
+    /// said where an image map's pixels would let more or less through, as POV-Ray's do.
+    void warn_image_clearness(const ImageMapDesc& m, const Texture& tex) {
+        const bool alpha = images_.grid(m.file, true)->has_alpha;
+        if (!alpha && !m.once && m.filter_all == 0 && m.transmit_all == 0) return;
+        const SourceLocation at = tex.pigment.at.known() ? tex.pigment.at : m.file.at;
+        warn_(at,
+              std::string("the image map's pixels differ in how much they let through (") +
+                  (alpha ? "the image's alpha" : m.once ? "clear outside the image (`once`)" : "`filter`/`transmit all`") +
+                  "): photon's transmission is the same everywhere (filter " + format_number(m.filter_all) +
+                  ", transmit " + format_number(m.transmit_all) +
+                  "); its colour is weighed by each pixel's opacity. A layer under it (`texture { ... } texture "
+                  "{ image_map ... }`) shows through exactly",
+              "approximated pigment", "image_map");
     }
     static bool same(const MaterialParams<S>& a, const MaterialParams<S>& b) {
         return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
@@ -673,6 +711,7 @@ private:
     std::vector<SourceLocation> object_at_;
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
+    ImageFiles& images_;
     MeshFiles mesh_files_;
     FontFiles font_files_;
     std::size_t skipped_ = 0;  ///< objects photon has no shape for

@@ -25,7 +25,8 @@ namespace photon::dsl {
 /// The sky of `desc`: none without a background colour or sky_sphere (POV-Ray's background is
 /// black). Throws dsl::Error at the sky_sphere for an emission that is negative or not finite.
 template <Scalar S>
-[[nodiscard]] std::optional<Environment<S>> build_environment(const SceneDescription& desc, Warnings& warn) {
+[[nodiscard]] std::optional<Environment<S>> build_environment(const SceneDescription& desc, Warnings& warn,
+                                                             ImageFiles* images = nullptr) {
     Color background;  // POV-Ray ignores the background's filter and transmit (no alpha channel)
     if (desc.background) background.rgb = glm::max(desc.background->rgb, Vector3(0.0));
     if (!desc.sky_sphere || desc.sky_sphere->pigments.empty()) {
@@ -39,7 +40,7 @@ template <Scalar S>
         for (const Pigment& p : sky.pigments) {
             Texture t;
             t.pigment = p;
-            layers.push_back(layers_detail::library_layer<S>(t, sky.transform, sky.emission, warn, p.at.known() ? p.at : sky.at));
+            layers.push_back(layers_detail::library_layer<S>(t, sky.transform, sky.emission, warn, p.at.known() ? p.at : sky.at, images));
         }
         return Environment<S>(AnyReflectanceField<S>(LayeredPigment<S>(std::move(layers))));
     } catch (const std::invalid_argument& e) {

@@ -82,7 +82,7 @@ inline Pigment Parser::parse_pigment_body(const Token& kw, Pigment p) {
         std::string how;
         p.color = pattern_average(st, p.color, how);
         degrade(at, degraded::approximated_pigment, name,
-                name == "image_map" ? "`image_map` is approximated by " + how
+                name == "image_map" ? "`image_map` is approximated by " + how + ": " + why_not
                                     : "`" + name + "` is approximated by " + how + ", " + describe_average(p.color) +
                                           ": " + why_not);
     }

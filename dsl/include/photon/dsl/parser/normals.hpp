@@ -17,6 +17,7 @@ namespace photon::dsl::detail {
 // NORMAL: normal { [NORMAL_IDENT] [PATTERN [[,] AMOUNT]] {PATTERN_MODIFIER | bump_size FLOAT
 //         | accuracy FLOAT | no_bump_scale | TRANSFORMATION} }
 //   PATTERN: bumps | dents | ripples | waves | wrinkles | an evaluated pattern (gradient VECTOR [,])
+//          | bump_map { ... } (images.hpp)
 inline Normal Parser::parse_normal(const Token& kw, Normal n) {
     const Nest nest(*this, kw.location);
     open_block(kw);
@@ -46,6 +47,9 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
                 if (!accept_symbol(",")) continue;
             }
             if (starts_expression(peek())) n.amount = parse_float("the bump size after `" + t.text + "`");
+        } else if (t.is_identifier("bump_map")) {
+            st.pattern = next();
+            st.image = parse_bump_map_block(t, n.amount);
         } else if (t.is_identifier("bump_size")) {
             next();
             n.amount = parse_float("the bump size after `bump_size`");
@@ -82,7 +86,7 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
     if (name.empty() && !stray && !modifies_pattern(st)) return n;  // the identifier's, or bump_size alone
     std::string why_not;
     const std::string shown = !name.empty() ? name : stray ? stray->text : "";
-    if (!name.empty() && !one_of(name, normal_patterns) && !one_of(name, evaluated_patterns)) {
+    if (!name.empty() && name != "bump_map" && !one_of(name, normal_patterns) && !one_of(name, evaluated_patterns)) {
         why_not = "photon does not evaluate this pattern (it tilts normals by bumps, dents, ripples, waves, wrinkles "
                   "and the slope of the patterns it evaluates)";
     } else if (stray) {
@@ -98,6 +102,19 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
         degrade(at, degraded::ignored_effect, "normal",
                 "`normal" + (shown.empty() ? std::string() : " { " + shown + " }") + "` is ignored: " + why_not);
         n.pattern = nullptr;
+        return n;
+    }
+    if (name == "bump_map") {  // the image's heights, placed as the normal's other patterns are
+        if (st.turbulence || !st.wave.empty()) {
+            degrade(at, degraded::ignored_effect, "normal",
+                    "`normal { bump_map }` is ignored: photon does not warp a bump map by turbulence or a wave");
+            n.pattern = nullptr;
+            return n;
+        }
+        PigmentPattern p;
+        p.name = name;
+        p.image = st.image;
+        n.pattern = std::make_shared<const PigmentPattern>(std::move(p));
         return n;
     }
     PigmentPattern p = st.base && (name.empty() || st.base->name == name) ? *st.base : PigmentPattern{};

@@ -290,6 +290,12 @@ private:
     Texture parse_texture(const Token& kw, Texture tex);
     Texture parse_texture_body(const Token& kw, Texture tex);
 
+    // images.hpp
+    ImageFile parse_image_file(const Token& kw);
+    std::shared_ptr<const ImageMapDesc> parse_image_map_block(const Token& kw);
+    void parse_height_field(const Token& kw, Object& obj);
+    std::shared_ptr<const ImageMapDesc> parse_bump_map_block(const Token& kw, double& bump_size);
+
     // objects.hpp
     Texture& ensure_texture(Object& obj);
     void add_primitives(Object& obj, std::size_t n, const SourceLocation& at);

@@ -50,6 +50,7 @@ struct Parser::PatternState {
     std::string wave;                     ///< `sine_wave`, ... as written
     std::vector<Token> unsupported;       ///< modifiers photon does not evaluate (warp, uv_mapping, ...)
     bool reduced = false;  ///< a listed colour was itself patterned, and is reduced to its average
+    std::shared_ptr<const ImageMapDesc> image;  ///< image_map's image and options
 };
 
 /// `rgb <r, g, b>` with three decimals, for messages.
@@ -234,8 +235,7 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         }
     } else if (w == "image_map") {
         st.pattern = next();
-        const Nest nest(*this, t.location);
-        skip_block(t);
+        st.image = parse_image_map_block(t);
     } else if (one_of(w, blend_map_keywords)) {
         st.map = parse_blend_map(next());
     } else if (one_of(w, valued_modifiers)) {
@@ -355,8 +355,8 @@ inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
 inline Color Parser::pattern_average(const PatternState& st, const Color& fallback, std::string& how) {
     const std::string& w = st.pattern.text;
     if (w == "image_map") {
-        how = "mid grey, rgb <0.5, 0.5, 0.5>: photon does not read image maps yet";
-        return {Vector3(0.5), 0, 0};
+        how = "mid grey, rgb <0.5, 0.5, 0.5>";
+        return {Vector3(0.5), st.image ? st.image->filter_all : 0, st.image ? st.image->transmit_all : 0};
     }
     if (one_of(w, listed_patterns) || w == "object") {
         std::vector<Color> colors = default_listed_colors(w);

@@ -17,6 +17,24 @@ namespace photon::dsl::detail {
 inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const PatternState& st,
                                                                       std::string& why_not) const {
     const std::string& name = st.pattern.text;
+    if (name == "image_map" && st.image) {
+        if (!st.unsupported.empty()) {
+            why_not = "photon does not evaluate `" + st.unsupported.front().text + "` (at " +
+                      position(st.unsupported.front().location) + ")";
+            return nullptr;
+        }
+        if (st.turbulence || st.map) {
+            why_not = st.turbulence ? "photon does not warp an image map by `turbulence`" : "an image map takes no colour map";
+            return nullptr;
+        }
+        PigmentPattern p;
+        p.name = name;
+        p.image = st.image;
+        // Mid grey with the image's `filter all` and `transmit all`: the one colour that stands
+        // for the image where photon needs one (the average pigment, its transmission).
+        p.colors = {{0.0, Color{Vector3(0.5), st.image->filter_all, st.image->transmit_all}}};
+        return std::make_shared<const PigmentPattern>(std::move(p));
+    }
     if (name.empty() || !one_of(name, evaluated_patterns)) {
         why_not = "photon does not evaluate this pattern";
         return nullptr;
