@@ -15,7 +15,8 @@
 // The sky (light/environment.hpp) is one more light with both strategies: a shadow ray drawn
 // as environment_lighting draws them (its density environment_direct_pdf), and the diffuse
 // continuation that leaves the scene. Camera and mirror rays that leave the scene see it.
-// Fog fades the segments of the path until its first diffuse vertex (fog_seen.hpp).
+// Fog fades the segments of the path until its first diffuse vertex (fog_seen.hpp); participating
+// media light and dim those segments and dim the later ones (media_seen.hpp).
 
 #include <limits>
 #include <string>
@@ -26,6 +27,7 @@
 #include "direct_lighting.hpp"
 #include "environment_lighting.hpp"
 #include "fog_seen.hpp"
+#include "media_seen.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
@@ -70,6 +72,14 @@ public:
             const auto surface = scene_.intersect(ray);
             std::optional<Facing<S>> f_here;
             if (surface) f_here = facing(*surface->material, surface->hit.point, surface->hit.normal, ray.direction);
+            if (arrival.kind == Arrival::unseen) {  // media on what the camera sees, as radiance() applies them
+                if (const auto media = media_seen(scene_, ray, surface, f_here ? &*f_here : nullptr, ctx)) {
+                    result += throughput * media->added;
+                    throughput *= media->transmittance;
+                }
+            } else {  // after a diffuse vertex they only dim, as they dim gathers and photons
+                throughput *= media_transmittance_seen(scene_, ray, surface, f_here ? &*f_here : nullptr, ctx.rng);
+            }
             if (arrival.kind == Arrival::unseen)  // fog on what the camera sees, as radiance() applies it
                 if (const auto fog = fog_seen(scene_, ray, surface, f_here ? &*f_here : nullptr)) {
                     result += throughput * fog->added;

@@ -14,10 +14,12 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "../math/vec.hpp"
 #include "../texture/normal_field.hpp"
 #include "../texture/reflectance_field.hpp"
+#include "../scene/medium.hpp"
 #include "absorption.hpp"
 #include "fresnel.hpp"
 
@@ -59,6 +61,9 @@ template <Scalar S> struct MaterialParams {
     AnyNormalField<S> normal_field{};
     /// What light loses per straight segment it travels inside the surface (clear by default).
     Absorption<S> absorption{};
+    /// Participating media inside the surface (POV-Ray's interior `media`, scene/medium.hpp):
+    /// what fills the object, seen along the segments rays run inside it. Empty: none.
+    std::vector<Medium<S>> media{};
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -212,6 +217,7 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
     if (p.ambient_texture) check_rgb(p.ambient_texture.upper_bound(), "the ambient texture's upper bound as", "radiance");
     if (p.highlight_texture) check_rgb(p.highlight_texture.upper_bound(), "the highlight texture's upper bound as", "weight");
     check_rgb(p.highlight_color, "highlight", "colour");
+    for (const Medium<S>& m : p.media) m.validate();
     has_ambient_ = !is_black(p.ambient);
 }
 

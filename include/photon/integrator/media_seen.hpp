@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// What participating media (scene/medium.hpp, on the segments scene/media_segment.hpp picks) do
+// in each pass.
+//
+// Camera, mirror and glass rays (the paths until their first diffuse vertex) see everything:
+// transmittance, emission and single scattering of every light (media_seen). Light reaching a
+// sample point is traced as POV-Ray traces its shadow rays: through transmissive surfaces,
+// tinted by their transmission, and dimmed by the interior media it crosses; atmospheric media
+// do not dim it (POV-Ray's default without a light's `media_attenuation`). The sky lights no
+// medium (POV-Ray scatters only light sources). Photons, gathers and the path tracer's
+// continuations after a diffuse vertex are only attenuated (media_transmittance_seen), so light
+// that reaches a diffuse surface through a murky volume is dimmed in every mode; light the media
+// scatter on to surfaces (multiple scattering, POV-Ray's media photons) is not rendered.
+
+#include <optional>
+#include <span>
+#include <type_traits>
+
+#include "../geometry/offset.hpp"
+#include "../light/light.hpp"
+#include "../material/scatter.hpp"
+#include "../scene/media_segment.hpp"
+#include "media_march.hpp"
+#include "shading_context.hpp"
+
+namespace photon {
+
+/// The fraction of light that travels from `x` along unit `to_light` for `distance` as POV-Ray's
+/// shadow rays see it: 0 at an opaque surface that casts shadows, times the transmission of each
+/// transmissive one, times the interior media (and absorption) of the objects it leaves.
+template <class SceneT, Scalar S>
+[[nodiscard]] Rgb<S> media_light_transmittance(const SceneT& scene, Vec3<S> x, const Vec3<S>& to_light, S distance,
+                                               ShadingContext& ctx) {
+    Rgb<S> t(S(1));
+    for (int crossing = 0; crossing < 32 && distance > S(0); ++crossing) {
+        ++ctx.rays.shadow;
+        const auto hit = scene.intersect(Ray<S>{x, to_light, distance});
+        if (!hit) return t;
+        const Material<S>& material = *hit->material;
+        const Facing<S> f = facing(material, hit->hit.point, hit->hit.normal, to_light);
+        const bool blocks = scene.objects()[hit->object].options.casts_shadow;
+        if (blocks && is_black(material.params().transmission)) return Rgb<S>(S(0));
+        if (blocks) t *= material.params().transmission;
+        if (!f.entering) {
+            t *= segment_transmittance(material, f, hit->hit.t);
+            t *= media_transmittance(std::span<const Medium<S>>(material.params().media), x, to_light, hit->hit.t, ctx.rng);
+        }
+        if (is_black(t)) return t;
+        const S error = intersection_error(hit->hit.point, x);
+        x = offset_origin(hit->hit.point, -f.normal, error);
+        distance -= hit->hit.t;
+    }
+    return t;
+}
+
+/// What the media do to a camera, mirror or glass ray's segment that ends at `surface` (seen from
+/// side `f`; none: the ray left the scene): nullopt where there are none.
+template <class SceneT, Scalar S, class SurfaceT>
+[[nodiscard]] std::optional<MediaEffect<S>> media_seen(const SceneT& scene, const Ray<S>& ray,
+                                                       const std::optional<SurfaceT>& surface,
+                                                       std::type_identity_t<const Facing<S>*> f, ShadingContext& ctx) {
+    const std::span<const Medium<S>> media = media_on_segment<SceneT, S>(scene, surface, f);
+    if (media.empty()) return std::nullopt;
+    const Vec3<S> direction = glm::normalize(ray.direction);
+    const auto lights_at = [&](const Vec3<S>& x, auto&& visit) {
+        for (const Light<S>& light : scene.lights()) {
+            const IncidentSampler<S> sampler(light, x);
+            const auto incident = sampler.sample(sampler.is_area() ? ctx.rng.uniform2<S>() : Vec2<S>(S(0.5)));
+            if (!incident || is_black(incident->irradiance)) continue;
+            Rgb<S> arriving = incident->irradiance;
+            if (light_casts_shadows(light))
+                arriving *= media_light_transmittance(scene, x, incident->direction, incident->distance, ctx);
+            if (!is_black(arriving)) visit(incident->direction, arriving);
+        }
+    };
+    return march_media(media, ray.origin, direction, media_segment_length(ray, surface), ctx.rng, lights_at);
+}
+
+}  // namespace photon
