@@ -205,3 +205,38 @@ TEST_CASE("an image with jittered, patterned, scattering media is the same for a
         }
     }
 }
+
+TEST_CASE("a light's media_interaction off scatters nothing; media_attenuation dims its shadow rays in the atmosphere",
+          "[media][render]") {
+    Medium<double> medium;
+    medium.scattering = Rgb<double>(1.0);
+    DefaultScene<double> dark;
+    dark.add(Sphere<double>({0, 0, 3}, 1), dark.add_material(media_container(medium)));
+    dark.add_light(PointLight<double>{.position = {0, 2, 3}, .power = Rgb<double>(100), .media_interaction = false});
+    dark.commit();
+    for (const Rgb<double>& seen : media_seen_by_every_mode(dark, Ray<double>{Vec3<double>(0), {0, 0, 1}}))
+        CHECK(seen[0] == 0.0);
+
+    // A white floor 2 below the eye, a light 3 above the point the ray meets; an absorbing
+    // atmosphere. The camera's segment (length 2 sqrt 2) is dimmed either way; the shadow ray
+    // (length 3) only with media_attenuation.
+    const double sigma = 0.15, power = 80.0, albedo = 0.7;
+    for (const bool attenuation : {false, true}) {
+        Medium<double> air;
+        air.absorption = Rgb<double>(sigma);
+        DefaultScene<double> scene;
+        scene.add(Plane<double>({0, 1, 0}, -2), scene.add_material(Material<double>::lambertian(Rgb<double>(albedo))));
+        scene.add_light(PointLight<double>{.position = {0, 1, 2}, .power = Rgb<double>(power), .media_attenuation = attenuation});
+        scene.add_medium(air);
+        scene.commit();
+        const double irradiance = power / (4 * std::acos(-1.0)) / 9.0 * (attenuation ? std::exp(-sigma * 3) : 1.0);
+        const double expected = albedo / std::acos(-1.0) * irradiance * std::exp(-sigma * 2 * std::sqrt(2.0));
+        RenderSettings settings;
+        settings.mode = RenderMode::rt;
+        ShadingContext ctx;
+        const Ray<double> ray{Vec3<double>(0), glm::normalize(Vec3<double>(0, -1, 1))};
+        INFO("media_attenuation " << attenuation);
+        CHECK(RadianceIntegrator<DefaultScene<double>>(scene, PhotonMaps{}, settings).radiance(ray, 1, ctx)[0] ==
+              Approx(expected).epsilon(1e-6));
+    }
+}

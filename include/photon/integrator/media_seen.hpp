@@ -28,15 +28,16 @@ namespace photon {
 
 /// The fraction of light that travels from `x` along unit `to_light` for `distance` as POV-Ray's
 /// shadow rays see it: 0 at an opaque surface that casts shadows, times the transmission of each
-/// transmissive one, times the interior media (and absorption) of the objects it leaves.
+/// transmissive one, times the interior media (and absorption) of the objects it leaves, and,
+/// with `atmosphere` (the light's media_attenuation), times the atmospheric media outside them.
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> media_light_transmittance(const SceneT& scene, Vec3<S> x, const Vec3<S>& to_light, S distance,
-                                               ShadingContext& ctx) {
+                                               bool atmosphere, ShadingContext& ctx) {
     Rgb<S> t(S(1));
     for (int crossing = 0; crossing < 32 && distance > S(0); ++crossing) {
         ++ctx.rays.shadow;
         const auto hit = scene.intersect(Ray<S>{x, to_light, distance});
-        if (!hit) return t;
+        if (!hit) return atmosphere ? t * media_transmittance(scene.media(), x, to_light, distance, ctx.rng) : t;
         const Material<S>& material = *hit->material;
         const Facing<S> f = facing(material, hit->hit.point, hit->hit.normal, to_light);
         const bool blocks = scene.objects()[hit->object].options.casts_shadow;
@@ -45,6 +46,8 @@ template <class SceneT, Scalar S>
         if (!f.entering) {
             t *= segment_transmittance(material, f, hit->hit.t);
             t *= media_transmittance(std::span<const Medium<S>>(material.params().media), x, to_light, hit->hit.t, ctx.rng);
+        } else if (atmosphere) {
+            t *= media_transmittance(scene.media(), x, to_light, hit->hit.t, ctx.rng);
         }
         if (is_black(t)) return t;
         const S error = intersection_error(hit->hit.point, x);
@@ -60,21 +63,40 @@ template <class SceneT, Scalar S, class SurfaceT>
 [[nodiscard]] std::optional<MediaEffect<S>> media_seen(const SceneT& scene, const Ray<S>& ray,
                                                        const std::optional<SurfaceT>& surface,
                                                        std::type_identity_t<const Facing<S>*> f, ShadingContext& ctx) {
-    const std::span<const Medium<S>> media = media_on_segment<SceneT, S>(scene, surface, f);
-    if (media.empty()) return std::nullopt;
-    const Vec3<S> direction = glm::normalize(ray.direction);
-    const auto lights_at = [&](const Vec3<S>& x, auto&& visit) {
-        for (const Light<S>& light : scene.lights()) {
-            const IncidentSampler<S> sampler(light, x);
-            const auto incident = sampler.sample(sampler.is_area() ? ctx.rng.uniform2<S>() : Vec2<S>(S(0.5)));
-            if (!incident || is_black(incident->irradiance)) continue;
-            Rgb<S> arriving = incident->irradiance;
-            if (light_casts_shadows(light))
-                arriving *= media_light_transmittance(scene, x, incident->direction, incident->distance, ctx);
-            if (!is_black(arriving)) visit(incident->direction, arriving);
-        }
-    };
-    return march_media(media, ray.origin, direction, media_segment_length(ray, surface), ctx.rng, lights_at);
+    if constexpr (!requires { scene.media(); }) {
+        return std::nullopt;
+    } else {
+        const std::span<const Medium<S>> media = media_on_segment<SceneT, S>(scene, surface, f);
+        if (media.empty()) return std::nullopt;
+        const Vec3<S> direction = glm::normalize(ray.direction);
+        const auto lights_at = [&](const Vec3<S>& x, auto&& visit) {
+            for (const Light<S>& light : scene.lights()) {
+                if (!light_media_interaction(light)) continue;
+                const IncidentSampler<S> sampler(light, x);
+                const auto incident = sampler.sample(sampler.is_area() ? ctx.rng.uniform2<S>() : Vec2<S>(S(0.5)));
+                if (!incident || is_black(incident->irradiance)) continue;
+                Rgb<S> arriving = incident->irradiance;
+                if (light_casts_shadows(light))
+                    arriving *= media_light_transmittance(scene, x, incident->direction, incident->distance,
+                                                          light_media_attenuation(light), ctx);
+                if (!is_black(arriving)) visit(incident->direction, arriving);
+            }
+        };
+        return march_media(media, ray.origin, direction, media_segment_length(ray, surface), ctx.rng, lights_at);
+    }
+}
+
+/// What the scene's atmospheric media leave of `light` along an unoccluded shadow ray from a
+/// surface (1 unless the light has media_attenuation, POV-Ray's ComputeShadowMedia).
+template <class SceneT, Scalar S>
+[[nodiscard]] Rgb<S> shadow_ray_media(const SceneT& scene, const Light<S>& light, const Vec3<S>& origin,
+                                      const Vec3<S>& to_light, S distance, Pcg32& rng) {
+    if constexpr (requires { scene.media(); }) {
+        if (!light_media_attenuation(light) || scene.media().empty()) return Rgb<S>(S(1));
+        return media_transmittance(scene.media(), origin, to_light, distance, rng);
+    } else {
+        return Rgb<S>(S(1));
+    }
 }
 
 }  // namespace photon

@@ -163,7 +163,8 @@ private:
             const S weight = sample->delta || !mis_ || brilliance ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
             Rgb<S> f = brdf * ((brilliance ? diffuse_cosine(material, cos_theta) : cos_theta) * weight);
             if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, sample->direction);
-            total += f * sample->radiance / sample->pdf;
+            total += f * sample->radiance / sample->pdf *
+                     shadow_ray_media(scene_, light, shadow_origin, sample->direction, sample->distance, ctx.rng);
         }
         if (scene_.has_environment_light() && material.has_diffuse())
             // Under brilliance the continuation gets no share (its density is set to 0): weight 1.
