@@ -240,3 +240,45 @@ TEST_CASE("a light's media_interaction off scatters nothing; media_attenuation d
               Approx(expected).epsilon(1e-6));
     }
 }
+
+TEST_CASE("a spotlight's beam is sampled where the ray crosses its cone, and matches a quadrature", "[media][render]") {
+    // A sharp 10-degree cone pointing down from (0, 5, 3) crosses the ray along +z between
+    // z = 3 -+ 5 tan 10 deg. Atmospheric isotropic scattering; a black wall at z = 8.
+    const double sigma_s = 0.2, power = 40.0, half_angle = 10.0;
+    const Vec3<double> apex(0, 5, 3);
+    Medium<double> haze;
+    haze.scattering = Rgb<double>(sigma_s);
+    haze.sampling = {.intervals = 4, .samples = 40, .jitter = 0.0};
+    DefaultScene<double> scene;
+    scene.add(Plane<double>({0, 0, -1}, -8), scene.add_material(Material<double>::lambertian(Rgb<double>(0))));
+    PointLight<double> spot{.position = apex, .power = Rgb<double>(power)};
+    spot.cone = Cone<double>({0, -1, 0}, half_angle);
+    scene.add_light(spot);
+    scene.add_medium(haze);
+    scene.commit();
+
+    const LitSpan<double> span = cone_span(apex, Vec3<double>(0, -1, 0), std::cos(half_angle * std::acos(-1.0) / 180),
+                                           Vec3<double>(0), Vec3<double>(0, 0, 1), 8.0);
+    const double reach = 5 * std::tan(half_angle * std::acos(-1.0) / 180);
+    CHECK(span.start == Approx(3 - reach));
+    CHECK(span.end == Approx(3 + reach));
+    const auto intervals = media_intervals<double>(std::span<const LitSpan<double>>(&span, 1), 8.0, haze.sampling, true);
+    REQUIRE(intervals.size() == 4);  // POV-Ray's share: int(0.1 / 1.1 * 4) + 1 unlit on each side, the rest lit
+    CHECK(!intervals[0].lit);
+    CHECK(intervals[1].lit);
+    CHECK(intervals[1].start + intervals[1].length * 2 == Approx(3 + reach));
+
+    const double intensity = power / spot.cone->solid_angle();  // a sharp cone's power over its solid angle
+    constexpr int n = 40'000;
+    const double a = 3 - reach, b = 3 + reach, h = (b - a) / n;
+    double expected = 0;
+    for (int i = 0; i <= n; ++i) {
+        const double z = a + h * i;
+        const double d2 = glm::dot(apex - Vec3<double>(0, 0, z), apex - Vec3<double>(0, 0, z));
+        expected += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * std::exp(-sigma_s * z) * sigma_s / (4 * std::acos(-1.0)) *
+                    intensity / d2;
+    }
+    expected *= h / 3;
+    for (const Rgb<double>& seen : media_seen_by_every_mode(scene, Ray<double>{Vec3<double>(0), {0, 0, 1}}))
+        CHECK(seen[0] == Approx(expected).epsilon(2e-3));
+}

@@ -13,9 +13,12 @@
 // that reaches a diffuse surface through a murky volume is dimmed in every mode; light the media
 // scatter on to surfaces (multiple scattering, POV-Ray's media photons) is not rendered.
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <type_traits>
+#include <variant>
+#include <vector>
 
 #include "../geometry/offset.hpp"
 #include "../light/light.hpp"
@@ -57,6 +60,62 @@ template <class SceneT, Scalar S>
     return t;
 }
 
+/// Where along the segment from `origin` along unit `direction` (length `length`) a point's
+/// direction from `apex` lies within the cone about unit `axis` of half-angle cosine `cos_half`
+/// (POV-Ray's ComputeSpotLightInterval). A cone of half-angle below 90 degrees is convex, so the
+/// points inside form one interval: found between the roots of the quadratic that bounds it.
+template <Scalar S>
+[[nodiscard]] LitSpan<S> cone_span(const Vec3<S>& apex, const Vec3<S>& axis, S cos_half, const Vec3<S>& origin,
+                                   const Vec3<S>& direction, S length) noexcept {
+    if (!(cos_half > S(0))) return {S(0), length};
+    const Vec3<double> v = Vec3<double>(origin - apex), d(direction), a(axis);
+    const double c2 = double(cos_half) * double(cos_half);
+    const double da = glm::dot(d, a), va = glm::dot(v, a);
+    const double qa = da * da - c2, qb = 2 * (va * da - c2 * glm::dot(v, d)), qc = va * va - c2 * glm::dot(v, v);
+    double cuts[4] = {0.0, double(length), 0.0, 0.0};
+    int n = 2;
+    if (std::abs(qa) > 1e-12) {
+        const double disc = qb * qb - 4 * qa * qc;
+        if (disc >= 0) {
+            const double r = std::sqrt(disc);
+            for (const double t : {(-qb - r) / (2 * qa), (-qb + r) / (2 * qa)})
+                if (t > 0 && t < double(length)) cuts[n++] = t;
+        }
+    } else if (std::abs(qb) > 1e-30) {
+        const double t = -qc / qb;
+        if (t > 0 && t < double(length)) cuts[n++] = t;
+    }
+    std::sort(cuts, cuts + n);
+    LitSpan<S> span;
+    for (int i = 0; i + 1 < n; ++i) {
+        const Vec3<double> w = v + d * (0.5 * (cuts[i] + cuts[i + 1]));
+        if (glm::dot(w, a) < double(cos_half) * glm::length(w)) continue;
+        if (span.empty()) span.start = S(cuts[i]);
+        span.end = S(cuts[i + 1]);
+    }
+    return span;
+}
+
+/// Where each light of the scene reaches the segment: a point light's cone where it has one,
+/// else all of it; nowhere for a light without media_interaction.
+template <class SceneT, Scalar S>
+[[nodiscard]] std::vector<LitSpan<S>> lit_spans(const SceneT& scene, const Vec3<S>& origin, const Vec3<S>& direction,
+                                                S length) {
+    std::vector<LitSpan<S>> spans;
+    for (const Light<S>& light : scene.lights()) {
+        if (!light_media_interaction(light) || is_black(light_power(light))) {
+            spans.push_back({});
+            continue;
+        }
+        const auto& cone = light_cone(light);
+        if (cone && std::holds_alternative<PointLight<S>>(light))
+            spans.push_back(cone_span(light_center(light), cone->axis(), cone->cos_half_angle(), origin, direction, length));
+        else
+            spans.push_back({S(0), length});
+    }
+    return spans;
+}
+
 /// What the media do to a camera, mirror or glass ray's segment that ends at `surface` (seen from
 /// side `f`; none: the ray left the scene): nullopt where there are none.
 template <class SceneT, Scalar S, class SurfaceT>
@@ -69,9 +128,15 @@ template <class SceneT, Scalar S, class SurfaceT>
         const std::span<const Medium<S>> media = media_on_segment<SceneT, S>(scene, surface, f);
         if (media.empty()) return std::nullopt;
         const Vec3<S> direction = glm::normalize(ray.direction);
-        const auto lights_at = [&](const Vec3<S>& x, auto&& visit) {
-            for (const Light<S>& light : scene.lights()) {
-                if (!light_media_interaction(light)) continue;
+        const S length = media_segment_length(ray, surface);
+        const bool scatters = std::any_of(media.begin(), media.end(), [](const Medium<S>& m) { return m.scatters(); });
+        const std::vector<LitSpan<S>> spans = scatters ? lit_spans(scene, ray.origin, direction, length)
+                                                       : std::vector<LitSpan<S>>{};
+        const auto lights_at = [&](const Vec3<S>& x, S t, auto&& visit) {
+            const auto lights = scene.lights();
+            for (std::size_t l = 0; l < lights.size(); ++l) {
+                if (!spans[l].contains(t)) continue;
+                const Light<S>& light = lights[l];
                 const IncidentSampler<S> sampler(light, x);
                 const auto incident = sampler.sample(sampler.is_area() ? ctx.rng.uniform2<S>() : Vec2<S>(S(0.5)));
                 if (!incident || is_black(incident->irradiance)) continue;
@@ -82,7 +147,7 @@ template <class SceneT, Scalar S, class SurfaceT>
                 if (!is_black(arriving)) visit(incident->direction, arriving);
             }
         };
-        return march_media(media, ray.origin, direction, media_segment_length(ray, surface), ctx.rng, lights_at);
+        return march_media(media, ray.origin, direction, length, std::span<const LitSpan<S>>(spans), ctx.rng, lights_at);
     }
 }
 

@@ -49,13 +49,15 @@ template <Scalar S> [[nodiscard]] S phase_value(PhaseFunction phase, S eccentric
     return inv_4pi;
 }
 
-/// How a medium is sampled along a segment: `intervals` equal intervals, each `samples` equal
-/// steps, each sampled once at its centre moved by up to +-jitter/2 of the step (POV-Ray's
-/// `intervals`, minimum `samples` and `jitter`; its defaults for method 3 are 1, 10 and 0).
+/// How a medium is sampled along a segment: `intervals` intervals (more where lights reach it:
+/// integrator/media_march.hpp), each `samples` equal steps, each sampled once at its centre moved
+/// by up to +-jitter/2 of the step (POV-Ray's `intervals`, minimum `samples`, `jitter` and
+/// `ratio`; its defaults for method 3 are 1, 10, 0 and 0.9).
 struct MediumSampling {
     unsigned intervals = 1;
     unsigned samples = 10;
     double jitter = 0.0;
+    double ratio = 0.9;  ///< POV-Ray's `ratio`: the share of the intervals that go where lights reach
 };
 
 template <Scalar S> struct Medium {
@@ -83,6 +85,8 @@ template <Scalar S> struct Medium {
             throw std::invalid_argument("media: at least one interval and one sample per interval");
         if (!(sampling.jitter >= 0.0 && sampling.jitter <= 1.0))
             throw std::invalid_argument("media: jitter must be in [0, 1]");
+        if (!(sampling.ratio >= 0.0 && sampling.ratio <= 1.0))
+            throw std::invalid_argument("media: ratio must be in [0, 1]");
         for (const auto& d : density)
             if (!d) throw std::invalid_argument("media: an empty density field");
     }

@@ -26,6 +26,7 @@
 #include "layers.hpp"
 #include "lights.hpp"
 #include "material.hpp"
+#include "media.hpp"
 #include "normal.hpp"
 #include "warnings.hpp"
 
@@ -111,6 +112,7 @@ private:
         Transform texture_placement;  ///< the texture's pattern space to the world
         Transform normal_placement;   ///< its normal's pattern space to the world
         Transform texture_world;      ///< the space the texture was written in to the world (for its layers)
+        Transform interior_world;     ///< the space the interior was written in to the world (its media's densities)
     };
 
     static Inherited inherit(const Object& o, const Inherited& parent) {
@@ -131,7 +133,8 @@ private:
         const Transform texture_world = o.texture ? parent.transform : parent.texture ? parent.texture_world : Transform{};
         return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                 o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                o.transform.then(parent.transform), placement, normal_placement, texture_world};
+                o.transform.then(parent.transform), placement, normal_placement, texture_world,
+                o.interior ? parent.transform : parent.interior_world};
     }
 
     void add(const Object& o, const Inherited& parent) {
@@ -488,6 +491,7 @@ private:
         const Texture& tex = in.texture ? *in.texture : pov_default;
         if (!tex.layers.empty()) return layered_material_for(in, tex, o);
         MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, desc_.version, warn_, o.at);
+        if (in.interior) p.media = build_media<S>(in.interior->media, in.interior_world, warn_);
         const PigmentPattern* pattern = tex.pigment.pattern.get();
         const Transform placement = pattern ? in.texture_placement : Transform{};
         const Normal* normal = tex.normal && tex.normal->pattern ? &*tex.normal : nullptr;
@@ -518,13 +522,16 @@ private:
     /// same place and interior.
     MaterialId layered_material_for(const Inherited& in, const Texture& tex, const Object& o) {
         for (const auto& m : layered_)
-            if (m.texture == &tex && m.interior == in.interior && m.world == in.texture_world) return m.id;
+            if (m.texture == &tex && m.interior == in.interior && m.world == in.texture_world &&
+                m.interior_world == in.interior_world)
+                return m.id;
         const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
         try {
-            const MaterialParams<S> p = layered_material_params<S>(tex, in.texture_world, in.interior, desc_.settings,
-                                                                   desc_.version, warn_, o.at);
+            MaterialParams<S> p = layered_material_params<S>(tex, in.texture_world, in.interior, desc_.settings,
+                                                             desc_.version, warn_, o.at);
+            if (in.interior) p.media = build_media<S>(in.interior->media, in.interior_world, warn_);
             const MaterialId id = scene_->add_material(Material<S>(p));
-            layered_.push_back({&tex, in.interior, in.texture_world, id});
+            layered_.push_back({&tex, in.interior, in.texture_world, in.interior_world, id});
             return id;
         } catch (const std::invalid_argument& e) {
             throw Error(at, e.what());
@@ -535,7 +542,7 @@ private:
                a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent &&
                a.blinn == b.blinn && a.blinn_exponent == b.blinn_exponent && a.metallic == b.metallic &&
                a.highlight_color == b.highlight_color && a.brilliance == b.brilliance && a.ambient == b.ambient &&
-               a.absorption == b.absorption;
+               a.absorption == b.absorption && a.media.empty() && b.media.empty();  // media: never shared
     }
 
 
@@ -561,6 +568,7 @@ private:
         const Texture* texture;
         const Interior* interior;
         Transform world;
+        Transform interior_world;
         MaterialId id;
     };
     std::vector<MadeLayered> layered_;
