@@ -7,9 +7,11 @@
 // 4 pi, so the library's scattering is 4 times POV-Ray's and its extinction factor a quarter of
 // POV-Ray's: the same light scattered, the same dimming. A density without a pattern is a
 // constant that multiplies the coefficients (as POV-Ray's does); a patterned one is a library
-// Pigment whose colours are densities (filter and transmit unused, as POV-Ray's lc.colour()).
+// Pigment whose colours are densities (filter and transmit unused, as POV-Ray's lc.colour()),
+// nesting as pigment_maps nest where its map's entries are densities.
 
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -18,10 +20,19 @@
 #include "../description.hpp"
 #include "../diagnostics.hpp"
 #include "../value.hpp"
+#include "layers.hpp"
 #include "pigment.hpp"
 #include "warnings.hpp"
 
 namespace photon::dsl {
+
+/// A density whose map entries are densities themselves: the colour of the nested layers
+/// (their filter and transmit unused, as POV-Ray's density ignores them).
+template <Scalar S> struct NestedDensity {
+    std::shared_ptr<const PigmentLayer<S>> layer;
+    [[nodiscard]] Rgb<S> operator()(const Vec3<S>& p) const { return (*layer)(p).color; }
+    [[nodiscard]] Rgb<S> upper_bound() const noexcept { return layer->envelope().color; }
+};
 
 namespace media_build_detail {
 
@@ -56,14 +67,15 @@ template <Scalar S>
             continue;
         }
         const PigmentPattern& pattern = *density.pattern;
-        if (std::any_of(pattern.nested.begin(), pattern.nested.end(), [](const auto& n) { return n != nullptr; }))
-            warn(density.at,
-                 "a density_map's patterned entries are approximated by their average densities: photon nests "
-                 "pigment_maps, not density maps",
-                 "approximated media", "density_map");
+        const Transform placement = density.transform.then(to_world);
+        if (std::any_of(pattern.nested.begin(), pattern.nested.end(), [](const auto& n) { return n != nullptr; })) {
+            // Patterned entries (a density_map of densities): the nesting pigment_maps use.
+            m.density.push_back(AnyReflectanceField<S>(NestedDensity<S>{std::make_shared<const PigmentLayer<S>>(
+                layers_detail::pattern_layer<S>(pattern, placement, Vector3(1.0), warn, density.at))}));
+            continue;
+        }
         std::vector<typename ColorMap<S>::Entry> entries;
         for (const auto& [v, c] : pattern.colors) entries.push_back({v, Rgb<S>(glm::max(c.rgb, Vector3(0.0)))});
-        const Transform placement = density.transform.then(to_world);
         Affine<double> a;
         a.linear = placement.linear;
         a.translation = placement.translation;
@@ -84,6 +96,7 @@ template <Scalar S>
     m.sampling.intervals = unsigned(std::max(1, d.intervals));
     m.sampling.samples = unsigned(std::max(1, d.samples_min));
     m.sampling.jitter = std::clamp(d.jitter, 0.0, 1.0);
+    m.sampling.ratio = std::clamp(d.ratio, 0.0, 1.0);
     if (d.jitter > 1.0)
         warn(written_at(d, "jitter"), "media jitter above 1 is used as 1: photon keeps each sample within its step",
              "approximated media", "jitter");
