@@ -106,6 +106,9 @@ TEST_CASE("what photon samples differently from POV-Ray is said", "[dsl][media]"
     CHECK_THAT(all_messages(b.warnings), Contains("unknown scattering type 9"));
     CHECK(error_of("sphere { 0, 1 interior { media { scattering { 1, 0.1 eccentricity 0.5 } } } }\n")
               .find("eccentricity") != std::string::npos);
+    // Photons in media (POV-Ray's global photons `media`) are not traced: said where asked for.
+    const StagedScene p = build_media_scene("global_settings { photons { count 1000 media 100 } }\nsphere { 0, 1 }\n");
+    CHECK_THAT(all_messages(p.warnings), Contains("photons `media` is ignored"));
 }
 
 TEST_CASE("export-pov writes media back", "[dsl][media]") {
