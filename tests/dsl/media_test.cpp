@@ -132,3 +132,15 @@ TEST_CASE("export-pov writes media back", "[dsl][media]") {
     for (const Vec3<double> p : {Vec3<double>(0, 1, 0), Vec3<double>(0.2, 1.1, 0), Vec3<double>(0, 0.7, 0.1)})
         CHECK(mb[0].density_at(p)[0] == Approx(ma[0].density_at(p)[0]));
 }
+
+TEST_CASE("a hollow glass inside media is said to stay clear; an emitting media lights a scene without lights",
+          "[dsl][media]") {
+    const StagedScene b = build_media_scene(
+        "sphere { 0, 2 pigment { rgbf 1 } hollow interior { media { emission 0.1 } } }\n"
+        "sphere { 0, 1 pigment { rgbt 0.9 } interior { ior 1.1 } hollow yes }\n"
+        "sphere { 3*x, 1 pigment { rgbt 0.9 } interior { ior 1.1 } }\n");
+    CHECK(places(b.warnings, "approximated media") == std::vector<std::string>{"4:1 hollow"});
+    const StagedScene dark = build_staged("sphere { 0, 1 pigment { rgbt 1 } interior { media { emission 1 } } }\n", {},
+                                          "camera { location <0, 0, -5> look_at 0 }\n");
+    CHECK_THAT(all_messages(dark.warnings), Contains("only emission (of surfaces and media) and ambient will show"));
+}

@@ -432,8 +432,8 @@ struct Object {
     /// POV-Ray's `inverse`: inside and outside swap (for CSG, and for refraction: a glass object
     /// inverted is a bubble of air in glass).
     bool inverse = false;
-    /// POV-Ray's `hollow`: kept for export; it matters only for media and fog, which photon does
-    /// not render, so it changes nothing.
+    /// POV-Ray's `hollow`: kept for export. photon's fog and atmospheric media stay out of
+    /// transmissive objects whatever it says; a hollow one inside media warns (build).
     std::optional<bool> hollow;
     Transform transform;         ///< applied to the shape (and to every child of a union or CSG)
     std::size_t primitives = 1;  ///< shapes and triangles below this object, for the size bound

@@ -80,8 +80,16 @@ public:
         if (scene.lights().empty() && !scene.has_environment_light()) {
             bool glows = false;  // POV-Ray's ambient and emission show without lights
             for (const auto& m : scene.materials()) glows = glows || m.params().ambient != Rgb<S>(S(0));
-            warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"
-                                  : "the scene has no light_source: the image will be black");
+            bool media_glow = false;  // emitting media (POV-Ray's micro.pov) show without lights too
+            const auto emits = [](const Medium<S>& m) { return !is_black(m.emission); };
+            for (const auto& m : scene.materials())
+                media_glow = media_glow || std::any_of(m.params().media.begin(), m.params().media.end(), emits);
+            media_glow = media_glow || std::any_of(scene.media().begin(), scene.media().end(), emits);
+            if (media_glow)
+                warn_(desc_.at, "the scene has no light_source: only emission (of surfaces and media) and ambient will show");
+            else
+                warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"
+                                      : "the scene has no light_source: the image will be black");
         }
     }
 
@@ -161,6 +169,7 @@ private:
         try {
             const MaterialId material = material_for(mine, o);
             const ObjectOptions options = options_for(mine, material);
+            warn_hollow_without_media(o, scene_->materials()[material]);
             const Transform& t = mine.transform;
             std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
             object_at_.resize(scene_->objects().size(), o.at);
@@ -537,6 +546,34 @@ private:
             throw Error(at, e.what());
         }
     }
+    /// POV-Ray fills a `hollow` object with the media around it (an enclosing object's, or the
+    /// atmosphere); photon keeps no stack of nested objects, so a transmissive one without media
+    /// of its own is clear inside: said where the scene has media.
+    void warn_hollow_without_media(const Object& o, const Material<S>& material) {
+        if (!o.hollow.value_or(false) || !material.params().media.empty() || is_black(material.params().transmission))
+            return;
+        if (!scene_has_media()) return;
+        warn_(o.at,
+              "`hollow` does not fill this transmissive object with the media around it: photon keeps no stack of "
+              "nested objects, so its inside is clear (give it an interior media to fill it)",
+              "approximated media", "hollow");
+    }
+    [[nodiscard]] bool scene_has_media() {
+        if (!has_media_) {
+            const std::function<bool(const Object&)> any = [&](const Object& o) {
+                if (o.interior && !o.interior->media.empty()) return true;
+                const auto* u = std::get_if<UnionShape>(&o.shape);
+                const auto* c = std::get_if<CsgShape>(&o.shape);
+                for (const auto& child : u ? u->children : c ? c->children : std::vector<std::shared_ptr<const Object>>{})
+                    if (any(*child)) return true;
+                return false;
+            };
+            has_media_ = !desc_.media.empty() ||
+                         std::any_of(desc_.objects.begin(), desc_.objects.end(), [&](const Object& o) { return any(o); });
+        }
+        return *has_media_;
+    }
+
     static bool same(const MaterialParams<S>& a, const MaterialParams<S>& b) {
         return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
                a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent &&
@@ -572,6 +609,7 @@ private:
         MaterialId id;
     };
     std::vector<MadeLayered> layered_;
+    std::optional<bool> has_media_;  ///< whether any media are written (scene_has_media)
     std::vector<SourceLocation> object_at_;
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
