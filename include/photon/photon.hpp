@@ -60,6 +60,8 @@
 
 #include "scene/camera.hpp"
 #include "scene/fog.hpp"
+#include "scene/media_segment.hpp"
+#include "scene/medium.hpp"
 #include "scene/scene.hpp"
 
 #include "photonmap/kdtree.hpp"
@@ -80,6 +82,8 @@
 #include "integrator/effect_switches.hpp"
 #include "integrator/environment_lighting.hpp"
 #include "integrator/fog_seen.hpp"
+#include "integrator/media_march.hpp"
+#include "integrator/media_seen.hpp"
 #include "integrator/radiance.hpp"
 #include "integrator/reference_render.hpp"
 #include "integrator/render.hpp"

@@ -16,6 +16,7 @@
 #include "../material/material.hpp"
 #include "../math/sampling.hpp"
 #include "environment_lighting.hpp"
+#include "media_seen.hpp"
 #include "separating_wall.hpp"
 #include "shading_context.hpp"
 
@@ -85,7 +86,8 @@ template <class SceneT, Scalar S>
             }
             Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
             if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
-            sum += f * incident->irradiance;
+            sum += f * incident->irradiance *
+                   shadow_ray_media(scene, light, shadow_origin, incident->direction, incident->distance, ctx.rng);
         }
         total += sum / S(count);
     }

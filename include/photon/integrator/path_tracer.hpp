@@ -15,7 +15,8 @@
 // The sky (light/environment.hpp) is one more light with both strategies: a shadow ray drawn
 // as environment_lighting draws them (its density environment_direct_pdf), and the diffuse
 // continuation that leaves the scene. Camera and mirror rays that leave the scene see it.
-// Fog fades the segments of the path until its first diffuse vertex (fog_seen.hpp).
+// Fog fades the segments of the path until its first diffuse vertex (fog_seen.hpp); participating
+// media light and dim those segments and dim the later ones (media_seen.hpp).
 
 #include <limits>
 #include <string>
@@ -26,6 +27,7 @@
 #include "direct_lighting.hpp"
 #include "environment_lighting.hpp"
 #include "fog_seen.hpp"
+#include "media_seen.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
@@ -70,6 +72,14 @@ public:
             const auto surface = scene_.intersect(ray);
             std::optional<Facing<S>> f_here;
             if (surface) f_here = facing(*surface->material, surface->hit.point, surface->hit.normal, ray.direction);
+            if (arrival.kind == Arrival::unseen) {  // media on what the camera sees, as radiance() applies them
+                if (const auto media = media_seen(scene_, ray, surface, f_here ? &*f_here : nullptr, ctx)) {
+                    result += throughput * media->added;
+                    throughput *= media->transmittance;
+                }
+            } else {  // after a diffuse vertex they only dim, as they dim gathers and photons
+                throughput *= media_transmittance_seen(scene_, ray, surface, f_here ? &*f_here : nullptr, ctx.rng);
+            }
             if (arrival.kind == Arrival::unseen)  // fog on what the camera sees, as radiance() applies it
                 if (const auto fog = fog_seen(scene_, ray, surface, f_here ? &*f_here : nullptr)) {
                     result += throughput * fog->added;
@@ -155,7 +165,8 @@ private:
             const S weight = sample->delta || !mis_ || brilliance ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
             Rgb<S> f = brdf * ((brilliance ? diffuse_cosine(material, cos_theta) : cos_theta) * weight);
             if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, sample->direction);
-            total += f * sample->radiance / sample->pdf;
+            total += f * sample->radiance / sample->pdf *
+                     shadow_ray_media(scene_, light, shadow_origin, sample->direction, sample->distance, ctx.rng);
         }
         if (scene_.has_environment_light() && material.has_diffuse())
             // Under brilliance the continuation gets no share (its density is set to 0): weight 1.

@@ -8,7 +8,8 @@
 // What arrives along a ray that ran inside absorbing glass is scaled by its transmittance.
 // Camera, mirror and glass rays that leave the scene see the sky; gather rays do not (its
 // direct light is the shadow rays', what it brings after a bounce the photons'). Fog fades
-// what camera, mirror and glass rays bring, not what gathers bring (fog_seen.hpp).
+// what camera, mirror and glass rays bring, not what gathers bring (fog_seen.hpp). Participating
+// media (media_seen.hpp) dim, light and glow on camera, mirror and glass rays, and dim gathers.
 
 #include <limits>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "boundary_probe.hpp"
 #include "direct_lighting.hpp"
 #include "fog_seen.hpp"
+#include "media_seen.hpp"
 #include "photon_maps.hpp"
 #include "render_settings.hpp"
 
@@ -41,7 +43,8 @@ public:
     [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
         const auto surface = scene_.intersect(ray);
         if (!surface) {
-            const Rgb<S> sky = sky_seen(scene_, ray.direction);
+            Rgb<S> sky = sky_seen(scene_, ray.direction);
+            if (const auto media = media_seen(scene_, ray, surface, nullptr, ctx)) sky = media->apply(sky);
             const auto fog = fog_seen(scene_, ray, surface, nullptr);
             return fog ? fog->apply(sky) : sky;
         }
@@ -83,6 +86,7 @@ public:
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += gain * specular(ray, *surface, f, error, depth, ctx, false);
         result *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
+        if (const auto media = media_seen(scene_, ray, surface, &f, ctx)) result = media->apply(result);
         const auto fog = fog_seen(scene_, ray, surface, &f);
         return fog ? fog->apply(result) : result;
     }
@@ -223,7 +227,8 @@ private:
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, true);
-        return result * segment_transmittance(material, f, surface->hit.t);
+        return result * segment_transmittance(material, f, surface->hit.t) *
+               media_transmittance_seen(scene_, ray, surface, &f, ctx.rng);
     }
 
     /// Precomputed irradiance at a gather hit: the nearest sample on the same surface that x can

@@ -32,6 +32,7 @@
 #include "../light/light.hpp"
 #include "../parallel/parallel_for.hpp"
 #include "../photonmap/kdtree.hpp"
+#include "../scene/media_segment.hpp"
 #include "../tracing/light_allocation.hpp"
 #include "memory_budget.hpp"
 #include "sppm_visible_points.hpp"
@@ -154,6 +155,7 @@ template <class SceneT>
                     const Material<S>& material = *surface->material;
                     const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
                     power *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
+                    power *= media_transmittance_seen(scene, ray, surface, &f, rng);  // dimmed by media
                     // Depth 0 is direct light, which the shadow rays of the camera pass cover.
                     if (depth > 0 && material.has_diffuse())
                         block.hits.push_back({Vec3<float>(surface->hit.point), Rgb<float>(power * shading_ratio(f)),

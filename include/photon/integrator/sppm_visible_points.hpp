@@ -8,7 +8,7 @@
 // probability, so every pass costs one path per pixel and the image stays unbiased in
 // expectation. Direct light is taken by shadow rays at every diffuse vertex on the way (as pm
 // does): deterministic, so it is not left to the choice. Fog fades every segment of the path,
-// as it fades radiance()'s camera, mirror and glass rays.
+// as it fades radiance()'s camera, mirror and glass rays; so do participating media (media_seen.hpp).
 
 #include <bit>
 #include <cstdint>
@@ -19,6 +19,7 @@
 #include "../scene/camera.hpp"
 #include "direct_lighting.hpp"
 #include "fog_seen.hpp"
+#include "media_seen.hpp"
 #include "render_settings.hpp"
 
 namespace photon {
@@ -72,14 +73,20 @@ template <class SceneT>
     for (unsigned depth = 1;; ++depth) {
         const auto surface = scene.intersect(ray);
         if (!surface) {  // left the scene: the sky, as radiance() sees it
+            Rgb<S> sky = sky_seen(scene, ray.direction);
+            if (const auto media = media_seen(scene, ray, surface, nullptr, ctx)) sky = media->apply(sky);
             const auto fog = fog_seen(scene, ray, surface, nullptr);
-            path.direct += throughput * (fog ? fog->apply(sky_seen(scene, ray.direction)) : sky_seen(scene, ray.direction));
+            path.direct += throughput * (fog ? fog->apply(sky) : sky);
             return path;
         }
         length += surface->hit.t;
         const Material<S>& material = *surface->material;
         const Facing<S> f = facing(material, surface->hit.point, surface->hit.normal, ray.direction);
         throughput *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
+        if (const auto media = media_seen(scene, ray, surface, &f, ctx)) {  // glow and light scattered, then dimming
+            path.direct += throughput * media->added;
+            throughput *= media->transmittance;
+        }
         if (const auto fog = fog_seen(scene, ray, surface, &f)) {  // the fog's colour, then what shows through it
             path.direct += throughput * fog->added;
             throughput *= fog->transmittance;

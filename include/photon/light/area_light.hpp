@@ -37,6 +37,8 @@ template <Scalar S> struct AreaLight {
     std::optional<Cone<S>> cone{};
     Falloff<S> falloff{};        ///< physical 1/d^2 unless set (POV-Ray's fades)
     bool casts_shadows = true;   ///< false: direct light without shadow rays (POV-Ray's `shadowless`)
+    bool media_interaction = true;   ///< false: participating media scatter none of it (POV-Ray's `media_interaction off`)
+    bool media_attenuation = false;  ///< true: atmospheric media dim its shadow rays (POV-Ray's `media_attenuation on`)
 
     /// Throws std::invalid_argument on a non-finite centre or axis, a size of 0, a circular light
     /// with a size of 1 (POV-Ray's error too: its mapping divides by 0 there), or a negative or

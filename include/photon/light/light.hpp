@@ -61,6 +61,14 @@ template <Scalar S> [[nodiscard]] const Falloff<S>& light_falloff(const Light<S>
 template <Scalar S> [[nodiscard]] bool light_casts_shadows(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) { return l.casts_shadows; }, light);
 }
+/// Whether participating media scatter the light (scene/medium.hpp).
+template <Scalar S> [[nodiscard]] bool light_media_interaction(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) { return l.media_interaction; }, light);
+}
+/// Whether the scene's atmospheric media dim the light's shadow rays (interior media always do).
+template <Scalar S> [[nodiscard]] bool light_media_attenuation(const Light<S>& light) noexcept {
+    return std::visit([](const auto& l) { return l.media_attenuation; }, light);
+}
 template <Scalar S> void validate(const Light<S>& light) {
     std::visit([](const auto& l) { l.validate(); }, light);
 }

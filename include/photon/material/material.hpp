@@ -14,10 +14,12 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "../math/vec.hpp"
 #include "../texture/normal_field.hpp"
 #include "../texture/reflectance_field.hpp"
+#include "../scene/medium.hpp"
 #include "absorption.hpp"
 #include "fresnel.hpp"
 
@@ -65,6 +67,9 @@ template <Scalar S> struct MaterialParams {
     /// its reflectances are scaled to a sum <= 1 for light transport, which must converge, and
     /// this gain gives the camera the surface as written. Not physical, so 1 by default.
     S seen_gain = S(1);
+    /// Participating media inside the surface (POV-Ray's interior `media`, scene/medium.hpp):
+    /// what fills the object, seen along the segments rays run inside it. Empty: none.
+    std::vector<Medium<S>> media{};
 };
 
 /// How a surface scatters at one hit, after Fresnel: the three reflectances Russian roulette
@@ -225,6 +230,7 @@ template <Scalar S> Material<S>::Material(const MaterialParams<S>& p) : params_(
     if (p.ambient_texture) check_rgb(p.ambient_texture.upper_bound(), "the ambient texture's upper bound as", "radiance");
     if (p.highlight_texture) check_rgb(p.highlight_texture.upper_bound(), "the highlight texture's upper bound as", "weight");
     check_rgb(p.highlight_color, "highlight", "colour");
+    for (const Medium<S>& m : p.media) m.validate();
     has_ambient_ = !is_black(p.ambient);
 }
 

@@ -37,6 +37,7 @@
 #include "../geometry/triangle_mesh.hpp"
 #include "../light/environment.hpp"
 #include "fog.hpp"
+#include "medium.hpp"
 #include "../light/light.hpp"
 #include "../material/material.hpp"
 
@@ -132,6 +133,14 @@ public:
     }
     [[nodiscard]] std::span<const Fog<S>> fogs() const noexcept { return fogs_; }
 
+    /// Adds a medium (medium.hpp) that fills the space outside objects (POV-Ray's atmospheric
+    /// media); throws std::invalid_argument if it is invalid.
+    void add_medium(const Medium<S>& medium) {
+        medium.validate();
+        media_.push_back(medium);
+    }
+    [[nodiscard]] std::span<const Medium<S>> media() const noexcept { return media_; }
+
     /// Builds the acceleration structure. Call after the last add() and before any query
     /// (the commit step of Embree's API); queries are then const and thread-safe.
     void commit(BvhConfig config = {.max_leaf_size = 2});
@@ -203,6 +212,7 @@ private:
     std::vector<Light<S>> lights_;
     std::optional<Environment<S>> environment_;
     std::vector<Fog<S>> fogs_;
+    std::vector<Medium<S>> media_;
     Ball<S> environment_ball_{};
     Bvh<S> bvh_;
     std::vector<std::uint32_t> bvh_objects_;  ///< object id per BVH primitive (leaf order)

@@ -22,6 +22,7 @@
 #include "../math/octahedral.hpp"
 #include "../parallel/parallel_for.hpp"
 #include "../photonmap/photon.hpp"
+#include "../scene/media_segment.hpp"
 #include "caustic_targets.hpp"
 #include "light_allocation.hpp"
 
@@ -179,6 +180,7 @@ void trace_photon_path(const SceneT& scene, const Light<S>* light, Ray<S> ray, R
         // The transmittance is carried exactly (no roulette on it): absorbing glass is usually
         // pale, and a roulette would add noise to the tinted caustics for little gain.
         power *= segment_transmittance(material, f, surface->hit.t);
+        power *= media_transmittance_seen(scene, ray, surface, &f, rng);  // dimmed by media, scattered light not carried
         if (caustic_only && depth == 0 && !material.is_specular()) return;
         if (material.has_diffuse()) {
             const PathKind kind = depth == 0 ? PathKind::direct : (specular_only ? PathKind::caustic : PathKind::indirect);

@@ -82,6 +82,7 @@ template <Scalar S>
     DefaultScene<S> scene;
     if (auto sky = build_environment<S>(desc, warn, &images)) scene.set_environment(std::move(*sky));
     for (const Fog<S>& fog : build_fogs<S>(desc)) scene.add_fog(fog);
+    for (const Medium<S>& medium : build_media<S>(desc.media, Transform{}, warn)) scene.add_medium(medium);
     builder.add_all(scene);
     scene.commit();
     // Said here, where the object's place in the file is known, for `check` and `render` alike

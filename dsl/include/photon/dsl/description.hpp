@@ -210,14 +210,38 @@ struct Finish {
     SourceLocation at;
 };
 
+/// `media { ... }`: POV-Ray's participating media, made the library's Medium (scene/medium.hpp)
+/// by build/media.hpp. Values as written; POV-Ray's defaults for method 3.
+struct MediaDescription {
+    Vector3 absorption{0.0}, emission{0.0}, scattering{0.0};
+    int scattering_type = 1;  ///< 1 isotropic, 2 Mie hazy, 3 Mie murky, 4 Rayleigh, 5 Henyey-Greenstein
+    double eccentricity = 0, extinction = 1;
+    /// Densities that multiply, each a pigment (`density { ... }`, its `density_map` read as a
+    /// pigment_map, which POV-Ray accepts there too); placed by their own and the media's
+    /// transformations, then the object's.
+    std::vector<Pigment> density;
+    int method = 3, intervals = 1, samples_min = 10, samples_max = 10, aa_level = 3;
+    double jitter = 0, aa_threshold = 0.1, confidence = 0.9, variance = 1.0 / 128, ratio = 0.9;
+    bool collect = true;
+    std::map<std::string, SourceLocation> written;
+    SourceLocation at;
+};
+
 struct Interior {
     double ior = 1;
     /// POV-Ray's absorption inside (library: Absorption::pov_fade); fade_distance 0 is clear.
     double fade_distance = 0, fade_power = 0;
     Vector3 fade_color{0.0};
+    std::vector<MediaDescription> media;  ///< interior media, in order (they add)
     std::map<std::string, SourceLocation> written;
     SourceLocation at;
 };
+
+/// Moves the interior's media densities by `step` after their own transformations.
+inline void transform_interior(Interior& in, const Transform& step) {
+    for (MediaDescription& m : in.media)
+        for (Pigment& d : m.density) d.transform = d.transform.then(step);
+}
 
 struct Texture {
     Pigment pigment;
@@ -277,6 +301,7 @@ struct LightSource {
     std::optional<AreaLight> area;
     double fade_distance = 0, fade_power = 0;
     bool shadowless = false, looks_like = false;
+    bool media_interaction = true, media_attenuation = false;  ///< POV-Ray's defaults
     /// The light's `photons { }` block: POV-Ray shoots reflected and refracted photons by default.
     bool photon_reflection = true, photon_refraction = true, photon_area_light = false;
     std::map<std::string, SourceLocation> written;
@@ -475,8 +500,8 @@ struct Object {
     /// POV-Ray's `inverse`: inside and outside swap (for CSG, and for refraction: a glass object
     /// inverted is a bubble of air in glass).
     bool inverse = false;
-    /// POV-Ray's `hollow`: kept for export; it matters only for media and fog, which photon does
-    /// not render, so it changes nothing.
+    /// POV-Ray's `hollow`: kept for export. photon's fog and atmospheric media stay out of
+    /// transmissive objects whatever it says; a hollow one inside media warns (build).
     std::optional<bool> hollow;
     Transform transform;         ///< applied to the shape (and to every child of a union or CSG)
     std::size_t primitives = 1;  ///< shapes and triangles below this object, for the size bound
@@ -611,6 +636,7 @@ struct SceneDescription {
     std::optional<Color> background;      ///< `background { COLOR }`, the last one written
     std::optional<SkySphere> sky_sphere;  ///< the last one written
     std::vector<FogDescription> fogs;     ///< every one written, in order (POV-Ray composes them all)
+    std::vector<MediaDescription> media;  ///< atmospheric media, every one written, in order
     std::vector<Object> objects;  ///< top-level statements, lights included, in file order
     GlobalSettings settings;
     std::vector<std::shared_ptr<const SourceFile>> files;  ///< the scene file and every include, in reading order

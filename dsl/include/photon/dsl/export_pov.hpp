@@ -41,6 +41,7 @@ public:
         if (d.camera) camera(*d.camera);
         sky(d);
         fogs(d);
+        for (const MediaDescription& m : d.media) media(m, 0), out_ << '\n';
         for (const Object& o : d.objects) object(o, 0);
         return out_.str();
     }
@@ -193,6 +194,8 @@ private:
             out_ << "fade_distance " << num(l.fade_distance) << " fade_power " << num(l.fade_power) << '\n';
         }
         if (l.shadowless) indent(level + 1), out_ << "shadowless\n";
+        if (!l.media_interaction) indent(level + 1), out_ << "media_interaction off\n";
+        if (l.media_attenuation) indent(level + 1), out_ << "media_attenuation on\n";
         if (l.looks_like) indent(level + 1), out_ << "// looks_like { ... } is not reproduced (photon ignores it)\n";
         indent(level + 1);
         out_ << "photons { reflection " << on_off(l.photon_reflection) << " refraction " << on_off(l.photon_refraction)
@@ -234,6 +237,34 @@ private:
                                 << " lambda " << num(f.lambda) << " turb_depth " << num(f.turb_depth) << '\n';
             out_ << "}\n\n";
         }
+    }
+
+    /// MEDIA as read: its coefficients, sampling and densities, placed in the world (written
+    /// after the object's transformations, which POV-Ray then does not apply to them).
+    void media(const MediaDescription& m, int level) {
+        indent(level), out_ << "media {\n";
+        indent(level + 1), out_ << "method " << m.method << " intervals " << m.intervals << " samples " << m.samples_min
+                                << ", " << m.samples_max << " jitter " << num(m.jitter) << " aa_threshold "
+                                << num(m.aa_threshold) << " aa_level " << m.aa_level << '\n';
+        indent(level + 1), out_ << "confidence " << num(m.confidence) << " variance " << num(m.variance) << " ratio "
+                                << num(m.ratio) << (m.collect ? "" : " collect off") << '\n';
+        if (m.absorption != Vector3(0.0)) indent(level + 1), out_ << "absorption rgb " << vec(m.absorption) << '\n';
+        if (m.emission != Vector3(0.0)) indent(level + 1), out_ << "emission rgb " << vec(m.emission) << '\n';
+        if (m.scattering != Vector3(0.0)) {
+            indent(level + 1), out_ << "scattering { " << m.scattering_type << ", rgb " << vec(m.scattering);
+            if (m.scattering_type == 5) out_ << " eccentricity " << num(m.eccentricity);
+            out_ << " extinction " << num(m.extinction) << " }\n";
+        }
+        for (const Pigment& d : m.density) {
+            indent(level + 1), out_ << "density { ";
+            if (d.pattern) {
+                pigment_body(*d.pattern, d.transform);
+                out_ << " }\n";
+            } else {
+                out_ << "rgb " << vec(d.color.rgb) << " }\n";
+            }
+        }
+        indent(level), out_ << "}\n";
     }
 
     /// An evaluated pattern with every modifier that differs from POV-Ray's default, its colours
@@ -401,7 +432,13 @@ private:
             if (in.fade_distance != 0) out_ << " fade_distance " << num(in.fade_distance);
             if (in.fade_power != 0) out_ << " fade_power " << num(in.fade_power);
             if (in.fade_color != Vector3(0.0)) out_ << " fade_color rgb " << vec(in.fade_color);
-            out_ << " }\n";
+            if (in.media.empty()) {
+                out_ << " }\n";
+            } else {
+                out_ << '\n';
+                for (const MediaDescription& m : in.media) media(m, level + 1);
+                indent(level), out_ << "}\n";
+            }
         }
         if (o.photons) {
             const ObjectPhotons& p = *o.photons;

@@ -71,6 +71,7 @@ namespace photon::dsl {
 #include "parser/settings.hpp"
 #include "parser/sky.hpp"
 #include "parser/fog.hpp"
+#include "parser/media.hpp"
 #include "parser/statements.hpp"
 
 namespace photon::dsl {

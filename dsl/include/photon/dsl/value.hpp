@@ -117,7 +117,8 @@ struct Array {
 
 using ValueData = std::variant<Numeric, std::string, Pigment, Finish, Interior, Texture, Transform, Object,
                                CameraDescription, MaterialBlock, Array, Spline, std::shared_ptr<const UserFunction>,
-                               BlendMap, IgnoredBlock, Normal, SkySphere, FogDescription>;
+                               BlendMap, IgnoredBlock, Normal, SkySphere, FogDescription,
+                               MediaDescription>;
 
 /// A declared identifier's value and where it was declared. A macro parameter passed by
 /// reference (a bare identifier as the argument, as in POV-Ray) holds no value of its own but
@@ -172,8 +173,10 @@ struct Value {
             return "a normal";
         case 16:
             return "a sky_sphere";
-        default:
+        case 17:
             return "a fog";
+        default:
+            return "a media";
     }
 }
 

@@ -99,14 +99,18 @@ void add_pov_light(DefaultScene<S>& scene, const LightSource& l, const Transform
                                 std::to_string(a->size2) + " separate shadows in POV-Ray) becomes one soft shadow: a sphere light of radius " +
                                 format_number(radius),
                      "approximated light", "orient");
-            scene.add_light(SphereLight<S>{Vec3<S>(position), S(radius), power, cone, falloff, shadows});
+            scene.add_light(SphereLight<S>{Vec3<S>(position), S(radius), power, cone, falloff, shadows,
+                                           l.media_interaction, l.media_attenuation});
         } else if (a) {
             scene.add_light(photon::AreaLight<S>{.center = Vec3<S>(position), .axis1 = Vec3<S>(t.vector(a->axis1)),
                                                  .axis2 = Vec3<S>(t.vector(a->axis2)), .size1 = unsigned(a->size1),
                                                  .size2 = unsigned(a->size2), .jitter = a->jitter, .circular = a->circular,
-                                                 .power = power, .cone = cone, .falloff = falloff, .casts_shadows = shadows});
+                                                 .power = power, .cone = cone, .falloff = falloff, .casts_shadows = shadows,
+                                                 .media_interaction = l.media_interaction,
+                                                 .media_attenuation = l.media_attenuation});
         } else {
-            scene.add_light(PointLight<S>{Vec3<S>(position), power, cone, falloff, shadows});
+            scene.add_light(PointLight<S>{Vec3<S>(position), power, cone, falloff, shadows, l.media_interaction,
+                                          l.media_attenuation});
         }
     } catch (const std::invalid_argument& e) {
         throw Error(at, e.what());

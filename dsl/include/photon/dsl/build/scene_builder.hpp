@@ -27,6 +27,7 @@
 #include "layers.hpp"
 #include "lights.hpp"
 #include "material.hpp"
+#include "media.hpp"
 #include "normal.hpp"
 #include "warnings.hpp"
 
@@ -80,8 +81,16 @@ public:
         if (scene.lights().empty() && !scene.has_environment_light()) {
             bool glows = false;  // POV-Ray's ambient and emission show without lights
             for (const auto& m : scene.materials()) glows = glows || m.params().ambient != Rgb<S>(S(0));
-            warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"
-                                  : "the scene has no light_source: the image will be black");
+            bool media_glow = false;  // emitting media (POV-Ray's micro.pov) show without lights too
+            const auto emits = [](const Medium<S>& m) { return !is_black(m.emission); };
+            for (const auto& m : scene.materials())
+                media_glow = media_glow || std::any_of(m.params().media.begin(), m.params().media.end(), emits);
+            media_glow = media_glow || std::any_of(scene.media().begin(), scene.media().end(), emits);
+            if (media_glow)
+                warn_(desc_.at, "the scene has no light_source: only emission (of surfaces and media) and ambient will show");
+            else
+                warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"
+                                      : "the scene has no light_source: the image will be black");
         }
     }
 
@@ -118,6 +127,7 @@ private:
         Transform texture_placement;  ///< the texture's pattern space to the world
         Transform normal_placement;   ///< its normal's pattern space to the world
         Transform texture_world;      ///< the space the texture was written in to the world (for its layers)
+        Transform interior_world;     ///< the space the interior was written in to the world (its media's densities)
         /// The clips of the unions around (set by add(): a CSG's children take none from them).
         std::vector<ClipRef> clips;
         /// POV-Ray keeps the bounds of the objects here: inside a CSG, or in a union it does not
@@ -143,7 +153,8 @@ private:
         const Transform texture_world = o.texture ? parent.transform : parent.texture ? parent.texture_world : Transform{};
         return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                 o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
-                o.transform.then(parent.transform), placement, normal_placement, texture_world, {}, false};
+                o.transform.then(parent.transform), placement, normal_placement, texture_world,
+                o.interior ? parent.transform : parent.interior_world, {}, false};
     }
 
     void add(const Object& o, const Inherited& parent) {
@@ -181,6 +192,7 @@ private:
         try {
             const MaterialId material = material_for(mine, o);
             const ObjectOptions options = options_for(mine, material);
+            warn_hollow_without_media(o, scene_->materials()[material]);
             const Transform& t = mine.transform;
             std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
             object_at_.resize(scene_->objects().size(), o.at);
@@ -615,6 +627,7 @@ private:
         const Texture& tex = in.texture ? *in.texture : pov_default;
         if (!tex.layers.empty()) return layered_material_for(in, tex, o);
         MaterialParams<S> p = material_params<S>(tex, in.interior, desc_.settings, desc_.version, warn_, o.at);
+        if (in.interior) p.media = build_media<S>(in.interior->media, in.interior_world, warn_);
         const PigmentPattern* pattern = tex.pigment.pattern.get();
         const Transform placement = pattern ? in.texture_placement : Transform{};
         const Normal* normal = tex.normal && tex.normal->pattern ? &*tex.normal : nullptr;
@@ -647,13 +660,16 @@ private:
     /// same place and interior.
     MaterialId layered_material_for(const Inherited& in, const Texture& tex, const Object& o) {
         for (const auto& m : layered_)
-            if (m.texture == &tex && m.interior == in.interior && m.world == in.texture_world) return m.id;
+            if (m.texture == &tex && m.interior == in.interior && m.world == in.texture_world &&
+                m.interior_world == in.interior_world)
+                return m.id;
         const SourceLocation at = tex.finish.at.known() ? tex.finish.at : (tex.at.known() ? tex.at : o.at);
         try {
-            const MaterialParams<S> p = layered_material_params<S>(tex, in.texture_world, in.interior, desc_.settings,
-                                                                   desc_.version, warn_, o.at, &images_);
+            MaterialParams<S> p = layered_material_params<S>(tex, in.texture_world, in.interior, desc_.settings,
+                                                             desc_.version, warn_, o.at, &images_);
+            if (in.interior) p.media = build_media<S>(in.interior->media, in.interior_world, warn_);
             const MaterialId id = scene_->add_material(Material<S>(p));
-            layered_.push_back({&tex, in.interior, in.texture_world, id});
+            layered_.push_back({&tex, in.interior, in.texture_world, in.interior_world, id});
             return id;
         } catch (const std::invalid_argument& e) {
             throw Error(at, e.what());
@@ -674,12 +690,40 @@ private:
                   "{ image_map ... }`) shows through exactly",
               "approximated pigment", "image_map");
     }
+    /// POV-Ray fills a `hollow` object with the media around it (an enclosing object's, or the
+    /// atmosphere); photon keeps no stack of nested objects, so a transmissive one without media
+    /// of its own is clear inside: said where the scene has media.
+    void warn_hollow_without_media(const Object& o, const Material<S>& material) {
+        if (!o.hollow.value_or(false) || !material.params().media.empty() || is_black(material.params().transmission))
+            return;
+        if (!scene_has_media()) return;
+        warn_(o.at,
+              "`hollow` does not fill this transmissive object with the media around it: photon keeps no stack of "
+              "nested objects, so its inside is clear (give it an interior media to fill it)",
+              "approximated media", "hollow");
+    }
+    [[nodiscard]] bool scene_has_media() {
+        if (!has_media_) {
+            const std::function<bool(const Object&)> any = [&](const Object& o) {
+                if (o.interior && !o.interior->media.empty()) return true;
+                const auto* u = std::get_if<UnionShape>(&o.shape);
+                const auto* c = std::get_if<CsgShape>(&o.shape);
+                for (const auto& child : u ? u->children : c ? c->children : std::vector<std::shared_ptr<const Object>>{})
+                    if (any(*child)) return true;
+                return false;
+            };
+            has_media_ = !desc_.media.empty() ||
+                         std::any_of(desc_.objects.begin(), desc_.objects.end(), [&](const Object& o) { return any(o); });
+        }
+        return *has_media_;
+    }
+
     static bool same(const MaterialParams<S>& a, const MaterialParams<S>& b) {
         return a.diffuse == b.diffuse && a.specular == b.specular && a.transmission == b.transmission &&
                a.ior == b.ior && a.fresnel == b.fresnel && a.phong == b.phong && a.phong_exponent == b.phong_exponent &&
                a.blinn == b.blinn && a.blinn_exponent == b.blinn_exponent && a.metallic == b.metallic &&
                a.highlight_color == b.highlight_color && a.brilliance == b.brilliance && a.ambient == b.ambient &&
-               a.absorption == b.absorption;
+               a.absorption == b.absorption && a.media.empty() && b.media.empty();  // media: never shared
     }
 
 
@@ -705,9 +749,11 @@ private:
         const Texture* texture;
         const Interior* interior;
         Transform world;
+        Transform interior_world;
         MaterialId id;
     };
     std::vector<MadeLayered> layered_;
+    std::optional<bool> has_media_;  ///< whether any media are written (scene_has_media)
     std::vector<SourceLocation> object_at_;
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them

@@ -94,16 +94,15 @@ inline void Parser::parse_bound_or_clip(const Token& kw, Object& obj) {
     obj.clipped_at = kw.location;
 }
 
-/// What photon does instead of the effect `keyword` (fog, rainbow, media).
+/// What photon does instead of the effect `keyword` (rainbow, ...).
 inline std::string effect_instead(const std::string& keyword) {
     if (keyword == "fog") return "photon renders without fog";
     if (keyword == "rainbow") return "photon renders no rainbow";
-    if (keyword == "media") return "photon renders no participating media (the space between surfaces is empty)";
     if (keyword == "normal") return "photon does not perturb normals";
     return "photon does not render it";
 }
 
-// EFFECT: fog|rainbow|media { balanced tokens }
+// EFFECT: rainbow { balanced tokens }
 inline void Parser::skip_effect(const Token& kw) {
     const Nest nest(*this, kw.location);
     skip_block(kw);

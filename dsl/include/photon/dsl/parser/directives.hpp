@@ -117,7 +117,8 @@ inline bool Parser::is_reserved(std::string_view w) const {
            one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
            one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, string_functions) ||
            one_of(w, function_words) || one_of(w, blend_map_keywords) ||
-           one_of(w, ignored_declarable_blocks) || w == "sky_sphere" || w == "fog";
+           one_of(w, ignored_declarable_blocks) || w == "sky_sphere" || w == "fog" || w == "media" ||
+           w == "density";
 }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
@@ -251,6 +252,8 @@ inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
     if (one_of(w, blend_map_keywords)) return parse_blend_map(next());
     if (w == "sky_sphere") return parse_sky_sphere_block(next());
     if (w == "fog") return parse_fog_block(next());
+    if (w == "media") return parse_media_block(next());
+    if (w == "density") return parse_density(next());
     if (one_of(w, ignored_declarable_blocks)) {
         const Nest nest(*this, t.location);
         skip_block(next());

@@ -107,8 +107,9 @@ inline constexpr std::string_view spline_keywords[] = {"spline", "linear_spline"
 inline constexpr std::string_view array_keywords[] = {"array", "mixed", "dimensions", "dimension_size"};
 /// Blocks `#declare` reads (and skips) without evaluating them, so that the standard includes read on.
 /// Declarable blocks photon reads and ignores (their warning comes where they are used). A
-/// sky_sphere and a fog are declarable too, and read (parser/sky.hpp, parser/fog.hpp).
-inline constexpr std::string_view ignored_declarable_blocks[] = {"rainbow", "media", "density"};
+/// sky_sphere, a fog, a media and a density are declarable too, and read (parser/sky.hpp,
+/// parser/fog.hpp, parser/media.hpp).
+inline constexpr std::string_view ignored_declarable_blocks[] = {"rainbow"};
 inline constexpr std::string_view modifier_keywords[] = {
     "texture",      "pigment",           "finish",          "normal",   "interior",
     "material",     "photons",           "translate",       "rotate",   "scale",

@@ -111,7 +111,7 @@ inline Object Parser::parse_light(const Token& kw) {
             close_block(t, "object modifiers");
             light.looks_like = true;
         } else if (w == "media_interaction" || w == "media_attenuation") {
-            parse_optional_bool();
+            (w == "media_interaction" ? light.media_interaction : light.media_attenuation) = parse_optional_bool();
         } else if (w == "photons") {
             parse_light_photons(t, light);
         } else if (w == "parallel" || w == "cylinder") {

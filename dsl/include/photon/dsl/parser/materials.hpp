@@ -216,7 +216,7 @@ inline Reflection Parser::parse_reflection(const Token& kw) {
 }
 
 // INTERIOR: interior { [INTERIOR_IDENT] {ior F | fade_distance F | fade_power F | fade_color COLOR
-//                     | caustics F | dispersion F | dispersion_samples F | media {..}} }
+//                     | caustics F | dispersion F | dispersion_samples F | MEDIA} }
 inline Interior Parser::parse_interior(const Token& kw, Interior in) {
     const Nest nest(*this, kw.location);
     open_block(kw);
@@ -247,7 +247,7 @@ inline Interior Parser::parse_interior(const Token& kw, Interior in) {
                             (t.text == "caustics" ? std::string("photon's caustics come from its photons")
                                                   : std::string("photon's glass has one ior for all colours")));
         } else if (t.is_identifier("media")) {
-            skip_effect(next());
+            in.media.push_back(parse_media_block(next()));
         } else {
             break;
         }

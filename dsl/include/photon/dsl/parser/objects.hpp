@@ -262,6 +262,7 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
             // POV-Ray moves the texture already given with the object, not one given after.
             obj.transform = obj.transform.then(step);
             if (obj.texture) transform_texture(*obj.texture, step);
+            if (obj.interior) transform_interior(*obj.interior, step);  // its media's densities, as POV-Ray
             continue;
         }
         const std::string& w = t.text;

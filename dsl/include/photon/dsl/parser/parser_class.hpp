@@ -350,6 +350,10 @@ private:
     // fog.hpp
     FogDescription parse_fog_block(const Token& kw);
 
+    // media.hpp
+    MediaDescription parse_media_block(const Token& kw);
+    Pigment parse_density(const Token& kw);
+
     // patterns.hpp
     struct PatternState;
     bool parse_pattern_item(PatternState& st);

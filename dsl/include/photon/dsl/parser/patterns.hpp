@@ -287,7 +287,8 @@ inline BlendMap Parser::parse_blend_map(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);
     BlendMap map;
-    map.keyword = kw.text == "colour_map" ? "color_map" : kw.text;
+    // POV-Ray reads a density_map's entries as densities, which are pigments: a pigment_map.
+    map.keyword = kw.text == "colour_map" ? "color_map" : kw.text == "density_map" ? "pigment_map" : kw.text;
     if (peek().kind == TokenKind::identifier) {
         const Token id = peek();
         const Value* v = lookup(id.text);
@@ -338,7 +339,7 @@ inline void Parser::parse_blend_entry_body(const Token& open, BlendMap& map) {
         Texture tex = parse_texture_body(open, default_texture_);
         map.entries.push_back({v, tex.pigment.color});
         if (!map.finish) map.finish = tex.finish;
-    } else {  // normal_map, slope_map, density_map: photon uses none of them; balanced up to the `]`
+    } else {  // normal_map, slope_map: photon uses neither; balanced up to the `]`
         int depth = 0;
         for (;;) {
             const Token& t = peek();

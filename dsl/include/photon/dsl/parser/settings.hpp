@@ -180,7 +180,8 @@ inline void Parser::parse_pov_photons(const Token& kw) {
             next();
             parse_float("`media`");
             while (accept_symbol(",")) parse_float("`media`");
-            ph.ignored[w] = t.location;
+            degrade(t.location, degraded::ignored_effect, w,
+                    "photons `media` is ignored: photon's media scatter light sources once, and no photons");
         } else if (w == "save_file" || w == "load_file") {
             next();
             const Token s = next();

@@ -63,7 +63,12 @@ inline void Parser::parse_statements() {
                 scene_.fogs.push_back(parse_fog_block(next()));
                 continue;
             }
-            if (one_of(w, {"rainbow", "media"})) {
+            // MEDIA: media { ... }, atmospheric, filling the space outside objects (parser/media.hpp)
+            if (w == "media") {
+                scene_.media.push_back(parse_media_block(next()));
+                continue;
+            }
+            if (w == "rainbow") {
                 skip_effect(next());
                 continue;
             }
