@@ -81,7 +81,7 @@ TEST_CASE("densities multiply, move with their media and object, and nest in den
     CHECK(nm.density_at({0.75, 0.7, 0})[1] == Approx(0.7));         // above: B's gradient y
 }
 
-TEST_CASE("scene-level media are atmospheric; lights' media flags carry over", "[dsl][media]") {
+TEST_CASE("scene-level media are atmospheric, and lights' media flags carry over", "[dsl][media]") {
     const StagedScene b = build_media_scene(
         "media { scattering { 1, 0.02 } samples 5 method 3 }\n"
         "light_source { <1, 5, 0>, rgb 1 spotlight point_at 0 radius 10 falloff 15 media_attenuation on }\n"
@@ -133,7 +133,7 @@ TEST_CASE("export-pov writes media back", "[dsl][media]") {
         CHECK(mb[0].density_at(p)[0] == Approx(ma[0].density_at(p)[0]));
 }
 
-TEST_CASE("a hollow glass inside media is said to stay clear; an emitting media lights a scene without lights",
+TEST_CASE("a hollow glass inside media is said to stay clear, and an emitting media lights a scene without lights",
           "[dsl][media]") {
     const StagedScene b = build_media_scene(
         "sphere { 0, 2 pigment { rgbf 1 } hollow interior { media { emission 0.1 } } }\n"

@@ -123,7 +123,7 @@ TEST_CASE("a point light scattered by a thin homogeneous slab matches a quadratu
     CHECK(phase_value(PhaseFunction::henyey_greenstein, 0.6, 1.0) > phase_value(PhaseFunction::henyey_greenstein, 0.6, -1.0));
 }
 
-TEST_CASE("phase functions are POV-Ray's divided by 4 pi; Henyey-Greenstein integrates to 1", "[media]") {
+TEST_CASE("phase functions are POV-Ray's divided by 4 pi, and Henyey-Greenstein integrates to 1", "[media]") {
     const double inv4pi = 1 / (4 * std::acos(-1.0));
     CHECK(phase_value(PhaseFunction::isotropic, 0.0, 0.3) == Approx(inv4pi));
     CHECK(phase_value(PhaseFunction::rayleigh, 0.0, 1.0) == Approx(inv4pi * 0.799372013 * 2));
@@ -136,7 +136,7 @@ TEST_CASE("phase functions are POV-Ray's divided by 4 pi; Henyey-Greenstein inte
     }
 }
 
-TEST_CASE("photons and the path tracer's later segments are dimmed by media; scattered light is not carried",
+TEST_CASE("photons and the path tracer's later segments are dimmed by media, and scattered light is not carried",
           "[media][render]") {
     Medium<double> medium;
     medium.absorption = Rgb<double>(0.5);
@@ -206,7 +206,7 @@ TEST_CASE("an image with jittered, patterned, scattering media is the same for a
     }
 }
 
-TEST_CASE("a light's media_interaction off scatters nothing; media_attenuation dims its shadow rays in the atmosphere",
+TEST_CASE("a light's media_interaction off scatters nothing, and media_attenuation dims its shadow rays in the atmosphere",
           "[media][render]") {
     Medium<double> medium;
     medium.scattering = Rgb<double>(1.0);
