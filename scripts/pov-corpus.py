@@ -237,7 +237,9 @@ def write_report(a, examples, scenes, results):
     row("crash (must be 0)", len(crashed))
     L.append("")
     L.append("## Warnings by kind\n")
-    L.append("What photon skipped or approximated, over all scenes (a warning counted once per place).\n")
+    L.append("What photon skipped or approximated, over all scenes (a warning counted once per place). Notes "
+             "(a scene without light sources that shows what POV-Ray shows, the scene's own `#warning`) report no "
+             "approximation and are not counted.\n")
     L.append("| warning | times | scenes |\n|---|---:|---:|")
     for k, c in kinds.most_common(40):
         L.append("| %s | %d | %d |" % (k.replace("|", "\\|"), c, len(kind_scenes[k])))

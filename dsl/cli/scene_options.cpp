@@ -16,7 +16,7 @@ namespace photon::cli {
 
 dsl::DiagnosticSink SceneOptions::sink() {
     return [this](const dsl::Diagnostic& d) {
-        ++warnings;
+        if (d.severity != dsl::Severity::note) ++warnings;
         if (!d.kind.empty()) ++degraded[d.kind][d.keyword];
         if (!quiet || strict) std::cerr << dsl::format_diagnostic(d) << '\n';
     };

@@ -341,8 +341,10 @@ TEST_CASE("warnings go to the diagnostics sink with their locations", "[dsl][err
     CHECK(q.warnings[1].location.column == 24);
     CHECK(q.warnings[2].message == "`no_image` is ignored by photon");
     CHECK(q.warnings[3].message == "#warning: check this");
-    CHECK(q.warnings[3].severity == dsl::Severity::warning);
-    CHECK_THAT(dsl::format_diagnostic(q.warnings[3]), StartsWith("test.pov:3:1: warning: #warning: check this\n"));
+    CHECK(q.warnings[2].severity == dsl::Severity::warning);
+    // The scene's own #warning is a note: it says nothing about what photon renders.
+    CHECK(q.warnings[3].severity == dsl::Severity::note);
+    CHECK_THAT(dsl::format_diagnostic(q.warnings[3]), StartsWith("test.pov:3:1: note: #warning: check this\n"));
 }
 
 TEST_CASE("damaged scene files give a located error or a scene, never anything else", "[dsl][errors]") {

@@ -158,5 +158,14 @@ TEST_CASE("a scene without lights shows its ambient, and says so", "[dsl][finish
         return all_messages(w);
     };
     CHECK_THAT(warning_of(""), Contains("no light_source: only its surfaces' ambient and emission will show"));
+    // What shows is what POV-Ray shows: a note; a black image is a warning.
+    {
+        std::vector<dsl::Diagnostic> w;
+        dsl::BuildOptions bo;
+        bo.diagnostics = collect(w);
+        (void)dsl::build<double>(dsl::parse_string("camera { location -5*z look_at 0 }\nsphere { 0, 1 pigment { rgb 1 } }\n"), bo);
+        REQUIRE(w.size() == 1);
+        CHECK(w[0].severity == dsl::Severity::note);
+    }
     CHECK_THAT(warning_of("finish { ambient 0 }"), Contains("no light_source: the image will be black"));
 }

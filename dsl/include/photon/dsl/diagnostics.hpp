@@ -35,7 +35,9 @@ struct SourceLocation {
     }
 };
 
-enum class Severity { warning, error };
+/// A note informs without saying photon approximated anything (a scene without lights, the
+/// scene's own #warning); a warning says what photon skipped or approximated; an error stops.
+enum class Severity { warning, error, note };
 
 struct Diagnostic {
     Severity severity = Severity::error;
@@ -67,7 +69,7 @@ using DiagnosticSink = std::function<void(const Diagnostic&)>;
 
 /// `file:line:column: error: message`, then the source line and a caret under the column.
 [[nodiscard]] inline std::string format_diagnostic(const Diagnostic& d) {
-    std::string out = d.location.str() + ": " + (d.severity == Severity::error ? "error: " : "warning: ") + d.message;
+    std::string out = d.location.str() + ": " + (d.severity == Severity::error ? "error: " : d.severity == Severity::note ? "note: " : "warning: ") + d.message;
     if (!d.location.known()) return out;
     const std::string_view line = source_line(d.location.file->text, d.location.line);
     if (line.empty() && d.location.column <= 1) return out;

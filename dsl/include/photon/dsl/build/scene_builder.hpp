@@ -57,11 +57,13 @@ public:
             for (const auto& m : scene.materials())
                 media_glow = media_glow || std::any_of(m.params().media.begin(), m.params().media.end(), emits);
             media_glow = media_glow || std::any_of(scene.media().begin(), scene.media().end(), emits);
+            // What shows is what POV-Ray shows: a note, not a warning, unless nothing will.
             if (media_glow)
-                warn_(desc_.at, "the scene has no light_source: only emission (of surfaces and media) and ambient will show");
+                warn_.note(desc_.at, "the scene has no light_source: only emission (of surfaces and media) and ambient will show");
+            else if (glows)
+                warn_.note(desc_.at, "the scene has no light_source: only its surfaces' ambient and emission will show");
             else
-                warn_(desc_.at, glows ? "the scene has no light_source: only its surfaces' ambient and emission will show"
-                                      : "the scene has no light_source: the image will be black");
+                warn_(desc_.at, "the scene has no light_source: the image will be black");
         }
     }
 

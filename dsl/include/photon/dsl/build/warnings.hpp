@@ -10,7 +10,7 @@
 
 namespace photon::dsl {
 
-/// Reports a warning once per place and message.
+/// Reports a warning (or a note) once per place and message.
 class Warnings {
 public:
     explicit Warnings(DiagnosticSink sink) : sink_(std::move(sink)) {}
@@ -18,6 +18,11 @@ public:
                     std::string keyword = {}) {
         if (!seen_.insert(at.str() + '\x1f' + message).second) return;
         if (sink_) sink_({Severity::warning, at, message, std::move(kind), std::move(keyword)});
+    }
+    /// Reports a note (Severity::note) once per place and message.
+    void note(const SourceLocation& at, const std::string& message) {
+        if (!seen_.insert(at.str() + '\x1f' + message).second) return;
+        if (sink_) sink_({Severity::note, at, message, {}, {}});
     }
 
 private:

@@ -89,7 +89,7 @@ inline void Parser::directive(const Token& d) {
     } else if (name == "warning" || name == "debug" || name == "error") {
         const Token s = parse_string_token("a string after `#" + name + "`");
         if (name == "error") fail(d.location, "#error: " + s.text);
-        if (name == "warning") warn(d.location, "#warning: " + s.text);
+        if (name == "warning") warn(d.location, "#warning: " + s.text, Severity::note);  // the scene's own message
     } else if (name == "default") {
         directive_default(d);
     } else if (name == "fopen") {

@@ -123,7 +123,7 @@ private:
     [[noreturn]] void fail(const SourceLocation& at, std::string message) const;
     [[noreturn]] void fail_expected(const std::string& expected, const Token& found,
                                     const std::string& hint = {}) const;
-    void warn(const SourceLocation& at, const std::string& message);
+    void warn(const SourceLocation& at, const std::string& message, Severity severity = Severity::warning);
     std::string too_large_message(std::size_t bytes) const;
     static std::filesystem::path weakly_canonical(const std::filesystem::path& p);
     std::shared_ptr<const SourceFile> load(const std::filesystem::path& path, std::string name,

@@ -16,9 +16,9 @@ inline void Parser::fail_expected(const std::string& expected, const Token& foun
     fail(found.location, "expected " + expected + ", found " + describe(found) + hint);
 }
 
-inline void Parser::warn(const SourceLocation& at, const std::string& message) {
+inline void Parser::warn(const SourceLocation& at, const std::string& message, Severity severity) {
     if (!warned_.insert(at.str() + '\x1f' + message).second) return;
-    if (options_.diagnostics) options_.diagnostics({Severity::warning, at, message, {}, {}});
+    if (options_.diagnostics) options_.diagnostics({severity, at, message, {}, {}});
 }
 
 inline std::string Parser::too_large_message(std::size_t bytes) const {
