@@ -50,6 +50,7 @@ inline constexpr SceneClass gallery[] = {
     {"point-caustic", false, true, 1024, 256, 256},
     {"cone-light", true, false, 256, 256},
     {"nested-glass", false, false, 2048, 256},
+    {"csg-glass", false, false, 2048, 256},
     {"mirror-corridor", false, false, 14336, 256},
     {"window-room", false, false, 1536, 512},
     {"sky-room", false, false, 1536, 512},
