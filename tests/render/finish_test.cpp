@@ -9,6 +9,7 @@
 #include <photon/photon.hpp>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 using namespace photon;
@@ -51,6 +52,48 @@ MaterialParams<double> shiny_floor() {
     p.brilliance = 2.5;
     p.ambient = Rgb<double>(0.02, 0.01, 0.005);
     return p;
+}
+
+/// A floor and a wall of material `wall` standing on it, lit by a small sphere light.
+std::unique_ptr<DefaultScene<double>> wall_on_floor(const MaterialParams<double>& wall) {
+    auto scene = std::make_unique<DefaultScene<double>>();
+    scene->add(Plane<double>({0, 1, 0}, 0), scene->add_material(Material<double>::lambertian(Rgb<double>(0.6))));
+    scene->add(Box<double>({-1, 0, 1}, {1, 1.5, 1.2}), scene->add_material(Material<double>(wall)));
+    scene->add_light(SphereLight<double>{.center = {0.5, 1.8, -0.5}, .radius = 0.1, .power = Rgb<double>(30.0)});
+    scene->commit();
+    return scene;
+}
+const PinholeCamera<double> wall_camera =
+    PinholeCamera<double>::look_at({0, 1.2, -2}, {0, 0.4, 0.5}, {0, 1, 0}, 60, 4.0 / 3.0);
+constexpr unsigned wall_width = 24, wall_height = 18;
+
+/// Per pixel, the object its whole footprint sees (corners and centre agree), -1 where mixed.
+std::vector<int> one_object_pixels(const DefaultScene<double>& scene) {
+    std::vector<int> seen(std::size_t(wall_width) * wall_height, -1);
+    for (unsigned y = 0; y < wall_height; ++y)
+        for (unsigned x = 0; x < wall_width; ++x) {
+            int object = -2;
+            for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.5}}) {
+                const auto hit = scene.intersect(*wall_camera.ray((x + u) / wall_width, (y + v) / wall_height));
+                const int o = hit ? int(hit->object) : -1;
+                object = object == -2 || object == o ? o : -3;
+            }
+            seen[std::size_t(y) * wall_width + x] = object < 0 ? -1 : object;
+        }
+    return seen;
+}
+
+/// Settings that render the wall scene quickly in every mode.
+RenderSettings wall_settings() {
+    RenderSettings s;
+    s.width = wall_width, s.height = wall_height;
+    s.samples_per_pixel = 2;
+    s.global_photons = 20'000;
+    s.caustic_photons = 0;
+    s.final_gather_rays = 16;
+    s.sppm_passes = 4;
+    s.sppm_photons_per_pass = 5'000;
+    return s;
 }
 
 }  // namespace
@@ -181,39 +224,15 @@ TEST_CASE("every mode renders POV-Ray's finish terms alike", "[finish][render]")
 TEST_CASE("an ambient radiance is seen by the camera and lights nothing, in every mode", "[finish][render]") {
     // A floor and a wall standing on it; the wall shows an ambient radiance or not.
     const auto make = [](Rgb<double> ambient) {
-        auto scene = std::make_unique<DefaultScene<double>>();
-        scene->add(Plane<double>({0, 1, 0}, 0), scene->add_material(Material<double>::lambertian(Rgb<double>(0.6))));
         MaterialParams<double> wall;
         wall.diffuse = Rgb<double>(0.5);
         wall.ambient = ambient;
-        scene->add(Box<double>({-1, 0, 1}, {1, 1.5, 1.2}), scene->add_material(Material<double>(wall)));
-        scene->add_light(SphereLight<double>{.center = {0.5, 1.8, -0.5}, .radius = 0.1, .power = Rgb<double>(30.0)});
-        scene->commit();
-        return scene;
+        return wall_on_floor(wall);
     };
     const auto lit = make(Rgb<double>(0.3, 0.2, 0.1)), dark = make(Rgb<double>(0.0));
-    const auto camera = PinholeCamera<double>::look_at({0, 1.2, -2}, {0, 0.4, 0.5}, {0, 1, 0}, 60, 4.0 / 3.0);
-    constexpr unsigned width = 24, height = 18;
-    // Pixels whose whole footprint sees one object (corners and centre agree): -1 where mixed.
-    std::vector<int> seen(std::size_t(width) * height, -1);
-    for (unsigned y = 0; y < height; ++y)
-        for (unsigned x = 0; x < width; ++x) {
-            int object = -2;
-            for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.5}}) {
-                const auto hit = dark->intersect(*camera.ray((x + u) / width, (y + v) / height));
-                const int o = hit ? int(hit->object) : -1;
-                object = object == -2 || object == o ? o : -3;
-            }
-            seen[std::size_t(y) * width + x] = object < 0 ? -1 : object;
-        }
-    RenderSettings s;
-    s.width = width, s.height = height;
-    s.samples_per_pixel = 2;
-    s.global_photons = 20'000;
-    s.caustic_photons = 0;
-    s.final_gather_rays = 16;
-    s.sppm_passes = 4;
-    s.sppm_photons_per_pass = 5'000;
+    const auto& camera = wall_camera;
+    const std::vector<int> seen = one_object_pixels(*dark);
+    RenderSettings s = wall_settings();
     for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::sppm, RenderMode::reference}) {
         s.mode = mode;
         const Film with = render(*lit, camera, s).film, without = render(*dark, camera, s).film;
@@ -241,39 +260,16 @@ TEST_CASE("a surface seen with a gain shows it to the camera and passes on no mo
     // POV-Ray's surfaces that reflect more than they receive (MaterialParams::seen_gain): a wall
     // with diffuse and mirror terms, seen through a gain of 2 or not, on a floor it lights.
     const auto make = [](double gain) {
-        auto scene = std::make_unique<DefaultScene<double>>();
-        scene->add(Plane<double>({0, 1, 0}, 0), scene->add_material(Material<double>::lambertian(Rgb<double>(0.6))));
         MaterialParams<double> wall;
         wall.diffuse = Rgb<double>(0.5, 0.4, 0.3);
         wall.specular = Rgb<double>(0.3);
         wall.seen_gain = gain;
-        scene->add(Box<double>({-1, 0, 1}, {1, 1.5, 1.2}), scene->add_material(Material<double>(wall)));
-        scene->add_light(SphereLight<double>{.center = {0.5, 1.8, -0.5}, .radius = 0.1, .power = Rgb<double>(30.0)});
-        scene->commit();
-        return scene;
+        return wall_on_floor(wall);
     };
     const auto doubled = make(2.0), plain = make(1.0);
-    const auto camera = PinholeCamera<double>::look_at({0, 1.2, -2}, {0, 0.4, 0.5}, {0, 1, 0}, 60, 4.0 / 3.0);
-    constexpr unsigned width = 24, height = 18;
-    std::vector<int> seen(std::size_t(width) * height, -1);  // one object under the whole footprint, else -1
-    for (unsigned y = 0; y < height; ++y)
-        for (unsigned x = 0; x < width; ++x) {
-            int object = -2;
-            for (const auto& [u, v] : {std::pair{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}, {0.5, 0.5}}) {
-                const auto hit = plain->intersect(*camera.ray((x + u) / width, (y + v) / height));
-                const int o = hit ? int(hit->object) : -1;
-                object = object == -2 || object == o ? o : -3;
-            }
-            seen[std::size_t(y) * width + x] = object < 0 ? -1 : object;
-        }
-    RenderSettings s;
-    s.width = width, s.height = height;
-    s.samples_per_pixel = 2;
-    s.global_photons = 20'000;
-    s.caustic_photons = 0;
-    s.final_gather_rays = 16;
-    s.sppm_passes = 4;
-    s.sppm_photons_per_pass = 5'000;
+    const auto& camera = wall_camera;
+    const std::vector<int> seen = one_object_pixels(*plain);
+    RenderSettings s = wall_settings();
     for (const RenderMode mode : {RenderMode::rt, RenderMode::pm, RenderMode::sppm, RenderMode::reference}) {
         s.mode = mode;
         const Film with = render(*doubled, camera, s).film, without = render(*plain, camera, s).film;
