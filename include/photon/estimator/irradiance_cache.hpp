@@ -5,14 +5,23 @@
 // records and interpolated between them. A record at x_i with normal n_i and harmonic mean
 // distance R_i to the surfaces its rays met contributes at x with weight
 //   w_i(x) = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)),
-// and is used where w_i > 1 / a (a: the allowed error). The cache is immutable once built; the
-// renderer builds it level by level (integrator/irradiance_cache_pass.hpp).
+// and is used where w_i > 1 / a (a: the allowed error). Each record carries Ward and Heckbert's
+// (1992) rotation and translation gradients (irradiance_gradients.hpp) and contributes to first
+// order, E_i + (n_i x n) . grad_r + (x - x_i) . grad_t: at zeroth order the interpolated
+// irradiance is flat around each record and bends only between records, which shows as blotches
+// on every wall. Practical limits after Krivanek et al. (2006): each R_i is clamped by its
+// neighbours' R_j + |x_i - x_j| (R is a distance to geometry: a record next to one that sees a
+// wall close by cannot see it much further), and grad_t is limited so that R_i |grad_t| <= E_i
+// (a gradient from a few noisy cells must not extrapolate to negative light). The cache is
+// immutable once built; the renderer builds it level by level (integrator/irradiance_cache_pass.hpp).
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <vector>
 
 #include "../photonmap/kdtree.hpp"
+#include "irradiance_gradients.hpp"
 
 namespace photon {
 
@@ -22,7 +31,48 @@ struct IrradianceRecord {
     Vec3<float> normal;
     Rgb<float> irradiance;
     float harmonic_distance;  ///< R_i, already clamped to the allowed range of validity
+    IrradianceGradients gradients{};
 };
+
+/// Ward and Heckbert's gradient limit: each channel's translation gradient scaled down so that
+/// R |grad_t| does not exceed that channel's irradiance.
+inline void limit_translation_gradient(IrradianceRecord& r) noexcept {
+    for (int c = 0; c < 3; ++c) {
+        const float slope = glm::length(r.gradients.translation[c]) * r.harmonic_distance;
+        const float e = std::max(0.0f, r.irradiance[c]);
+        if (!(slope <= e)) r.gradients.translation[c] *= (slope > 0.0f && std::isfinite(slope)) ? e / slope : 0.0f;
+    }
+}
+
+/// Neighbour clamping (Krivanek et al. 2006): R_i = min(R_i, R_j + |x_i - x_j|) over the records j
+/// whose domains, a R, overlap record i's. Every new radius is computed from the old ones (one
+/// Jacobi sweep), so the result does not depend on the records' order or on threads. Returns the
+/// number of radii that shrank; never raises one.
+inline std::size_t clamp_radii_to_neighbours(std::span<IrradianceRecord> records, float error) {
+    if (records.size() < 2) return 0;
+    const KdTree<IrradianceRecord> tree{std::span<const IrradianceRecord>(records)};
+    float largest = 0.0f;
+    for (const auto& r : records) largest = std::max(largest, r.harmonic_distance);
+    std::vector<float> clamped(records.size());
+    std::vector<Neighbor<float>> found;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const IrradianceRecord& ri = records[i];
+        float r = ri.harmonic_distance;
+        for (const Neighbor<float>& c : tree.within_radius(ri.position, error * (ri.harmonic_distance + largest), found)) {
+            const IrradianceRecord& rj = tree.payload(c.index);
+            const float d = std::sqrt(c.distance2);
+            if (d < error * (ri.harmonic_distance + rj.harmonic_distance)) r = std::min(r, rj.harmonic_distance + d);
+        }
+        clamped[i] = r;
+    }
+    std::size_t shrunk = 0;
+    for (std::size_t i = 0; i < records.size(); ++i)
+        if (clamped[i] < records[i].harmonic_distance) {
+            records[i].harmonic_distance = clamped[i];
+            ++shrunk;
+        }
+    return shrunk;
+}
 
 class IrradianceCache {
 public:
@@ -55,7 +105,12 @@ public:
             const float w = denom > 0.0f ? 1.0f / denom : 1e30f;
             if (!(w > threshold)) continue;
             const float wc = std::min(w, 1e6f);
-            sum += wc * r.irradiance;
+            const Vec3<float> turn = glm::cross(r.normal, n), move = x - r.position;
+            const IrradianceGradients& g = r.gradients;
+            const Rgb<float> e(r.irradiance.r + glm::dot(turn, g.rotation[0]) + glm::dot(move, g.translation[0]),
+                               r.irradiance.g + glm::dot(turn, g.rotation[1]) + glm::dot(move, g.translation[1]),
+                               r.irradiance.b + glm::dot(turn, g.rotation[2]) + glm::dot(move, g.translation[2]));
+            sum += wc * glm::max(e, Rgb<float>(0.0f));  // extrapolated, so it may dip below 0
             weights += wc;
         }
         if (!(weights > 0.0f)) return std::nullopt;

@@ -5,7 +5,11 @@
 // find the diffuse points the image will shade, directly or through mirrors and glass. A point
 // that no record covers yet gets a new record: a final gather with many rays. Records made within
 // one level do not see each other, only those of earlier levels, and each pixel draws from its own
-// random stream, so the cache is the same for any thread count.
+// random stream, so the cache is the same for any thread count. Each record keeps the gradients
+// of its own gather, limited so that they cannot extrapolate to negative light. After each level
+// but the last, every radius is clamped by its neighbours' (clamp_radii_to_neighbours, one
+// order-independent sweep, so still the same for any thread count): a coarse record that reached
+// past a corner gives way, and the finer levels fill in around it.
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +57,7 @@ template <class SceneT>
         parallel_for(found.size(), 64, settings.threads, [&](std::size_t b, std::size_t e) {
             if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
             ShadingContext ctx;
+            std::vector<GatherSample<S>> samples;
             for (std::size_t i = b; i < e; ++i) {
                 const unsigned px = unsigned(i % cols) * spacing + spacing / 2, py = unsigned(i / cols) * spacing + spacing / 2;
                 if (px >= settings.width || py >= settings.height) continue;
@@ -65,17 +70,25 @@ template <class SceneT>
                     const Vec3<float> xf(x), nf(n);
                     if (cache.interpolate(xf, nf, ctx.nearest)) return;
                     if (!mine.empty() && IrradianceCache(mine, error).interpolate(xf, nf, ctx.nearest)) return;
-                    const auto g = integrator.gather(x, n, settings.final_gather_rays, ctx, geometric_n);
+                    const auto g = integrator.gather(x, n, settings.final_gather_rays, ctx, geometric_n, &samples);
                     const S footprint = pixel.size + length * pixel.angle;
                     const S r = std::clamp(g.harmonic_distance, S(1.5) * footprint / S(error),
                                            S(24) * footprint / S(error));
-                    mine.push_back({xf, nf, Rgb<float>(g.irradiance), float(r)});
+                    IrradianceRecord record{xf, nf, Rgb<float>(g.irradiance), float(r),
+                                            irradiance_gradients<S>(samples, GatherStrata::for_rays(settings.final_gather_rays),
+                                                                    Frame<S>::from_normal(n))};
+                    limit_translation_gradient(record);
+                    mine.push_back(record);
                 });
             }
             const std::lock_guard lock(merge);
             stats.rays += ctx.rays;
         });
         for (auto& list : found) records.insert(records.end(), list.begin(), list.end());
+        // Not after the last level: the radii it would shrink there leave holes that no level
+        // fills, and every image sample landing in one gathers in full (room 1 at 320 x 240:
+        // 45% more gather rays for the same picture).
+        if (spacing > 1) clamp_radii_to_neighbours(records, error);
         cache = IrradianceCache(records, error);
         if (settings.progress) settings.progress(RenderPhase::precompute, double(++done_levels) / double(levels));
         if (spacing == 1) break;

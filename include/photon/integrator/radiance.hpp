@@ -15,6 +15,7 @@
 #include <optional>
 #include <vector>
 
+#include "../estimator/irradiance_gradients.hpp"
 #include "../geometry/offset.hpp"
 #include "../material/scatter.hpp"
 #include "../math/frame.hpp"
@@ -154,25 +155,34 @@ public:
         S harmonic_distance;  ///< harmonic mean of the distances the rays travelled (inf: none hit)
     };
 
-    /// Final gathering at x (already offset) with unit shading normal n: `rays` cosine-distributed,
-    /// stratified rays whose hits are read from the global map, or its precomputed irradiance.
+    /// Final gathering at x (already offset) with unit shading normal n: `rays` cosine-distributed
+    /// rays, stratified in (theta, phi) cells (GatherStrata: the cells Ward and Heckbert's gradients
+    /// need), whose hits are read from the global map, or its precomputed irradiance.
     /// E = pi * mean L. Under a tilted shading normal (geometric_n differs from n), the rays
-    /// that would enter the surface bring nothing, as the path tracer's do.
+    /// that would enter the surface bring nothing, as the path tracer's do. `samples`, if given,
+    /// receives every cell's sample, row by row (for irradiance_gradients).
     [[nodiscard]] Gathered gather(const Vec3<S>& x, const Vec3<S>& n, unsigned rays, ShadingContext& ctx,
-                                  std::optional<Vec3<S>> geometric_n = std::nullopt) const {
+                                  std::optional<Vec3<S>> geometric_n = std::nullopt,
+                                  std::vector<GatherSample<S>>* samples = nullptr) const {
         if (geometric_n && *geometric_n == n) geometric_n.reset();
-        const unsigned grid = strata_per_axis(rays);
-        const unsigned count = grid * grid;
+        const GatherStrata strata = GatherStrata::for_rays(rays);
+        const unsigned count = strata.count();
         const Frame<S> frame = Frame<S>::from_normal(n);
+        if (samples) samples->clear();
         Rgb<S> sum(S(0));
         S inverse_distances = 0;
         for (unsigned i = 0; i < count; ++i) {
-            const Vec3<S> dir = frame.to_world(cosine_hemisphere(stratified(i, grid, ctx.rng.uniform2<S>())));
-            if (geometric_n && !(glm::dot(*geometric_n, dir) > S(0))) continue;
-            ++ctx.rays.gather;
+            const Vec3<S> local = strata.direction(i / strata.columns, i % strata.columns, ctx.rng.uniform2<S>());
+            const Vec3<S> dir = frame.to_world(local);
             S distance = std::numeric_limits<S>::infinity();
-            sum += gathered_radiance(Ray<S>{x, dir}, 1, ctx, &distance);
-            inverse_distances += S(1) / distance;
+            Rgb<S> l(S(0));
+            if (!geometric_n || glm::dot(*geometric_n, dir) > S(0)) {
+                ++ctx.rays.gather;
+                l = gathered_radiance(Ray<S>{x, dir}, 1, ctx, &distance);
+                sum += l;
+                inverse_distances += S(1) / distance;
+            }
+            if (samples) samples->push_back({local, l, distance});
         }
         return {sum * (pi<S> / S(count)),
                 inverse_distances > S(0) ? S(count) / inverse_distances : std::numeric_limits<S>::infinity()};
