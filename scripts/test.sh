@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds everything and runs the whole test suite three ways, stopping at the first failure:
-#   1. Release build (assertions on in the tests): BUILD (default build/)
-#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer: BUILD-asan
+#   1. Release build with g++, assertions on in every target: BUILD (default build/)
+#   2. the same suite under AddressSanitizer + UndefinedBehaviorSanitizer, built with clang: BUILD-asan
 #   3. the scene-language fuzzer for 60 s (clang, libFuzzer): BUILD-fuzz (fuzz/run.sh)
 # Installs what it needs first. Usage: scripts/test.sh [build-dir]
 set -euo pipefail
@@ -11,18 +11,21 @@ jobs=$(nproc)
 scripts/install-deps.sh test
 stamp() { echo "test.sh: $* ($SECONDS s)"; }
 
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_ASSERTS=ON
 cmake --build "$build" -j "$jobs"
 ctest --test-dir "$build" --output-on-failure -j "$jobs"
 stamp "release suite passed"
 
 # -O1 keeps the instrumented build and run quick; -g1 (line tables) is enough for stack traces.
+# clang, not g++: the instrumented build is the longest step of this script, and clang 14 compiles
+# it in about half g++ 12's CPU time (test_dsl's unit: 109 against 231 CPU-s, 1.3 against 2.9 GB)
+# with the same two sanitizers; the Release build above keeps g++, Debian's compiler.
 # Left out: POV-Ray's own checks and the install test (it builds a separate consumer project
 # without the sanitizers), which run no instrumented photon code, the examples (demos), the
 # scene-class gallery (minutes of rendering in Release; the same code paths as the unit tests),
 # and the tests tagged [heavy] (statistical checks with many samples, 10-40 s each when
 # instrumented, whose code paths lighter tests run).
-cmake -S . -B "$build-asan" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+cmake -S . -B "$build-asan" -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
     -DPHOTON_SANITIZE=ON -DPHOTON_BUILD_EXAMPLES=OFF
 cmake --build "$build-asan" -j "$jobs" --target photon_test_programs  # what its ctest runs, no more
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1 \
