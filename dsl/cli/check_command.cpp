@@ -71,14 +71,21 @@ void report(const std::string& file, const dsl::SceneDescription& desc, const ds
     for (const auto& light : scene.lights()) {
         const float radius = light_radius(light);
         const auto* area = std::get_if<AreaLight<float>>(&light);
-        std::cout << "           " << (area ? "area light" : radius > 0 ? "sphere light" : "point light") << " at " << vec(light_center(light));
-        if (area)
+        const auto* parallel = std::get_if<ParallelLight<float>>(&light);
+        std::cout << "           "
+                  << (area ? "area light" : parallel ? "parallel light" : radius > 0 ? "sphere light" : "point light")
+                  << " at " << vec(light_center(light));
+        if (parallel) {
+            std::cout << ", direction " << vec(parallel->direction) << ", irradiance " << rgb(parallel->irradiance)
+                      << " W/m^2, beam radius " << parallel->beam_radius << ", power " << rgb(light_power(light)) << " W";
+        } else if (area)
             std::cout << ", axes " << vec(area->axis1) << " and " << vec(area->axis2) << ", " << area->size1 << " x "
                       << area->size2 << (area->jitter ? " jittered" : "") << (area->circular ? " circular" : "");
         else if (radius > 0)
             std::cout << ", radius " << radius;
-        std::cout << ", power " << rgb(light_power(light)) << " W, intensity " << rgb(radiant_intensity(light))
-                  << " W/sr";
+        if (!parallel)
+            std::cout << ", power " << rgb(light_power(light)) << " W, intensity " << rgb(radiant_intensity(light))
+                      << " W/sr";
         if (const auto& cone = light_cone(light))
             std::cout << ", " << (cone->is_soft() ? "spotlight profile " : "cone ") << vec(cone->axis()) << " half-angle "
                       << cone->half_angle_degrees() << " deg";

@@ -236,9 +236,10 @@ TEST_CASE("camera types and lights photon lacks are approximated", "[dsl][degrad
         "light_source { <0, 5, -5>, 1 projected_through { sphere { 0, 1 } } }\n"
         "sphere { 0, 1 }\n");
     CHECK(places(b.warnings, "approximated camera") == std::vector<std::string>{"1:10 mesh_camera"});
-    CHECK(places(b.warnings, "approximated light") == std::vector<std::string>{"2:30 parallel", "3:30 cylinder"});
+    CHECK(places(b.warnings, "approximated light") == std::vector<std::string>{"3:30 cylinder"});  // parallel is exact
     CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"4:30 projected_through"});
     CHECK(b.lights == 3);
+    CHECK(std::get<dsl::LightSource>(b.desc.objects[0].shape).parallel);
     CHECK_FALSE(std::get<dsl::LightSource>(b.desc.objects[1].shape).spotlight.has_value());  // the cylinder light
     // POV-Ray's other camera types, its focal blur and its orthographic bare `angle` are exact: no warning.
     for (const char* type : {"orthographic", "fisheye angle 360", "ultra_wide_angle angle 200", "omnimax", "panoramic",

@@ -361,7 +361,7 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): oriented a
             &w);
         CHECK(light_cone(b3.scene.lights()[0])->effective_solid_angle() == Approx(pi_d).epsilon(1e-9));
     }
-    SECTION("transforms move lights; shadowless casts no shadows; looks_like warns") {
+    SECTION("transforms move lights (and their looks_like object); shadowless casts no shadows") {
         const auto b = built(
             "light_source { <0, 1, 0>, rgb 1 fade_distance 1 fade_power 2 translate <1, 0, 0>\n"
             "  shadowless looks_like { sphere { 0, 0.1 } } }\n"
@@ -369,7 +369,10 @@ TEST_CASE("light units: fade_power 2 makes the colour I / (2 pi D^2): oriented a
             &w);
         CHECK(std::get<PointLight<double>>(b.scene.lights()[0]).position == Vec3<double>(1, 1, 0));
         CHECK_FALSE(std::get<PointLight<double>>(b.scene.lights()[0]).casts_shadows);
-        CHECK_THAT(all_messages(w), !Contains("shadowless") && Contains("`looks_like` is ignored"));
+        CHECK_THAT(all_messages(w), !Contains("shadowless") && !Contains("looks_like"));
+        REQUIRE(b.scene.objects().size() == 2);
+        CHECK(glm::length(b.scene.object_bounding_ball(0).center - Vec3<double>(1, 1, 0)) < 1e-12);
+        CHECK_FALSE(b.scene.objects()[0].options.casts_shadow);
     }
 }
 

@@ -103,7 +103,7 @@ template <class SceneT, Scalar S>
                                                 S length) {
     std::vector<LitSpan<S>> spans;
     for (const Light<S>& light : scene.lights()) {
-        if (!light_media_interaction(light) || is_black(light_power(light))) {
+        if (!light_media_interaction(light) || !light_is_lit(light)) {
             spans.push_back({});
             continue;
         }

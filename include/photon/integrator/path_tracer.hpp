@@ -46,7 +46,7 @@ template <Scalar S> [[nodiscard]] S power_heuristic(S pdf, S other) noexcept {
 /// surfaces (L S+ D E) is a path no path tracer samples, so it renders black.
 template <class SceneT> [[nodiscard]] std::string reference_blind_spot(const SceneT& scene) {
     bool point_light = false, specular = false, diffuse = false;
-    for (const auto& light : scene.lights()) point_light = point_light || (!light_has_surface(light) && !is_black(light_power(light)));
+    for (const auto& light : scene.lights()) point_light = point_light || (!light_has_surface(light) && light_is_lit(light));
     for (std::uint32_t i = 0; i < scene.objects().size(); ++i) {
         specular = specular || scene.any_material_of(i, is_specular_material);
         diffuse = diffuse || scene.any_material_of(i, has_diffuse_material);

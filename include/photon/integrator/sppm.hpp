@@ -34,6 +34,7 @@
 #include "../photonmap/kdtree.hpp"
 #include "../scene/media_segment.hpp"
 #include "../tracing/light_allocation.hpp"
+#include "../tracing/photon_hit.hpp"
 #include "memory_budget.hpp"
 #include "sppm_visible_points.hpp"
 
@@ -148,7 +149,7 @@ template <class SceneT>
                     power = plan.power[l] * emission_weight(lights[l], dir);
                 }
                 for (unsigned depth = 0; depth < settings.max_photon_depth; ++depth) {
-                    const auto surface = scene.intersect(ray);
+                    const auto surface = photon_intersect(scene, ray, block.rays);
                     ++block.rays;
                     if (!surface) break;
                     if (depth == 0 && !sky) power *= first_hit_scale(lights[l], surface->hit.point, ray.origin);  // the light's falloff

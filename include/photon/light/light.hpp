@@ -6,7 +6,9 @@
 // point emitters: photons leave from one of them, shadow rays aim at one of them. A light's
 // falloff (falloff.hpp) and its cone's profile (cone.hpp) scale both alike: direct light by g(d)
 // and the profile, photons by the profile at emission and by g(d) d^2 at their first hit
-// (first_hit_scale), d from the centre, or from its emitter for an area light.
+// (first_hit_scale), d from the centre, or from its emitter for an area light. A parallel light
+// (parallel_light.hpp) is a plane emitting one direction: photons leave its beam disc, shadow
+// rays run along the direction back to the plane, and nothing falls off with distance.
 
 #include <cmath>
 #include <algorithm>
@@ -19,12 +21,13 @@
 #include "../math/rng.hpp"
 #include "../math/sampling.hpp"
 #include "area_light.hpp"
+#include "parallel_light.hpp"
 #include "point_light.hpp"
 #include "sphere_light.hpp"
 
 namespace photon {
 
-template <Scalar S> using Light = std::variant<PointLight<S>, SphereLight<S>, AreaLight<S>>;
+template <Scalar S> using Light = std::variant<PointLight<S>, SphereLight<S>, AreaLight<S>, ParallelLight<S>>;
 
 /// How photon directions are drawn: `rejection` as the paper (points in a cube kept when inside
 /// the unit ball, and inside the cone if any), `direct` by inverting the distribution. Both are
@@ -37,7 +40,9 @@ template <Scalar S> [[nodiscard]] Vec3<S> light_center(const Light<S>& light) no
     }, light);
 }
 /// Radius of the ball around light_center that holds every point light can leave from: a sphere
-/// light's radius, the ball around an area light's emitters, 0 for a point light.
+/// light's radius, the ball around an area light's emitters, 0 for a point light. A parallel
+/// light's centre is its position (a point of its plane) and its radius 0: callers that bound
+/// where its light comes from must treat it apart (its beam is ParallelLight::beam_*).
 template <Scalar S> [[nodiscard]] S light_radius(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) {
         if constexpr (requires { l.radius; }) return l.radius;
@@ -52,8 +57,21 @@ template <Scalar S> [[nodiscard]] bool light_has_surface(const Light<S>& light) 
 template <Scalar S> [[nodiscard]] const Rgb<S>& light_power(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) -> const Rgb<S>& { return l.power; }, light);
 }
+/// The light's cone; none for a parallel light (POV-Ray's parallel spotlight has no cone effect).
 template <Scalar S> [[nodiscard]] const std::optional<Cone<S>>& light_cone(const Light<S>& light) noexcept {
-    return std::visit([](const auto& l) -> const std::optional<Cone<S>>& { return l.cone; }, light);
+    static const std::optional<Cone<S>> none{};
+    return std::visit([](const auto& l) -> const std::optional<Cone<S>>& {
+        if constexpr (requires { l.cone; }) return l.cone; else return none;
+    }, light);
+}
+template <Scalar S> [[nodiscard]] bool is_parallel(const Light<S>& light) noexcept {
+    return std::holds_alternative<ParallelLight<S>>(light);
+}
+/// Whether the light sends any light: power in some channel, or for a parallel light irradiance
+/// (its power is 0 when no finite beam covers the scene, yet it lights infinite planes).
+template <Scalar S> [[nodiscard]] bool light_is_lit(const Light<S>& light) noexcept {
+    if (const auto* p = std::get_if<ParallelLight<S>>(&light)) return max_component(p->irradiance) > S(0);
+    return max_component(light_power(light)) > S(0);
 }
 template <Scalar S> [[nodiscard]] const Falloff<S>& light_falloff(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) -> const Falloff<S>& { return l.falloff; }, light);
@@ -78,7 +96,8 @@ template <Scalar S> [[nodiscard]] S emission_solid_angle(const Light<S>& light) 
     const auto& cone = light_cone(light);
     return cone ? cone->effective_solid_angle() : S(4) * pi<S>;
 }
-/// Radiant intensity in W/sr per channel along the cone's axis (in every direction without a
+/// Radiant intensity in W/sr per channel along the cone's axis (a parallel light has none: its
+/// power is over its beam, and its irradiance is ParallelLight::irradiance) (in every direction without a
 /// cone or inside a sharp one). With a falloff other than 1/d^2, `power` is the power of the
 /// physical light of this intensity and profile, what the photons leave with before their first
 /// hit rescales them (first_hit_scale).
@@ -105,15 +124,18 @@ template <Scalar S> [[nodiscard]] S emission_weight(const Light<S>& light, const
 /// photon's emission point `origin`.
 template <Scalar S>
 [[nodiscard]] S first_hit_scale(const Light<S>& light, const Vec3<S>& p, const Vec3<S>& origin) noexcept {
+    if (const auto* parallel = std::get_if<ParallelLight<S>>(&light))
+        return parallel->falloff_factor(parallel->plane_distance(p));
     const Falloff<S>& falloff = light_falloff(light);
     if (falloff.is_physical()) return S(1);
     const Vec3<S> from = std::holds_alternative<AreaLight<S>>(light) ? origin : light_center(light);
     return falloff.relative_to_inverse_square(glm::length(p - from));
 }
 
-/// Unit emission direction, uniform over the light's emitting directions.
+/// Unit emission direction, uniform over the light's emitting directions (a parallel light's one).
 template <Scalar S>
 [[nodiscard]] Vec3<S> sample_emission_direction(const Light<S>& light, EmissionSampler sampler, Pcg32& rng) noexcept {
+    if (const auto* parallel = std::get_if<ParallelLight<S>>(&light)) return parallel->direction;
     const auto& cone = light_cone(light);
     if (sampler == EmissionSampler::direct) {
         const Vec2<S> u = rng.uniform2<S>();
@@ -128,9 +150,15 @@ template <Scalar S>
 /// Origin of a photon leaving the light along unit `direction`. For a sphere light, rays of one
 /// direction leave a Lambertian sphere uniformly over its silhouette disc, so the origin is a
 /// uniform point of that disc lifted onto the sphere's near side. For an area light, one emitter
-/// (each carries the same power into every direction).
+/// (each carries the same power into every direction). For a parallel light, a uniform point of
+/// its beam disc (every photon carries the same share of irradiance * beam area).
 template <Scalar S>
 [[nodiscard]] Vec3<S> sample_emission_origin(const Light<S>& light, const Vec3<S>& direction, Vec2<S> u) noexcept {
+    if (const auto* parallel = std::get_if<ParallelLight<S>>(&light)) {
+        const Vec2<S> disc = parallel->beam_radius * concentric_disc(u);
+        const Frame<S> frame = Frame<S>::from_normal(parallel->direction);
+        return parallel->beam_center + frame.to_world({disc.x, disc.y, S(0)});
+    }
     if (const auto* area = std::get_if<AreaLight<S>>(&light)) return area->center + area->emitter_offset(u);
     const S radius = light_radius(light);
     const Vec3<S> center = light_center(light);
@@ -154,10 +182,19 @@ template <Scalar S> struct IncidentLight {
 /// uniformly in the solid angle they subtend, so the estimate is exact for an unoccluded light
 /// (with its falloff evaluated at the centre's distance, as POV-Ray does for its area lights).
 /// An area light's samples are its emitters, each lighting x by its intensity times its falloff
-/// at its own distance (POV-Ray's `area_illumination`).
+/// at its own distance (POV-Ray's `area_illumination`). A parallel light's one sample runs back
+/// along its direction to its plane (as POV-Ray's shadow ray), with its irradiance (faded by
+/// the plane distance, if it fades); nothing behind the plane.
 template <Scalar S> class IncidentSampler {
 public:
     IncidentSampler(const Light<S>& light, const Vec3<S>& x) noexcept : cone_(light_cone(light)) {
+        if (const auto* parallel = std::get_if<ParallelLight<S>>(&light)) {
+            distance_ = parallel->plane_distance(x);
+            visible_ = distance_ > S(0);
+            axis_ = -parallel->direction;
+            value_ = parallel->irradiance * parallel->falloff_factor(distance_);
+            return;
+        }
         to_center_ = light_center(light) - x;
         const S d2 = glm::dot(to_center_, to_center_);
         if ((area_ = std::get_if<AreaLight<S>>(&light))) {

@@ -112,7 +112,7 @@ template <Scalar S> [[nodiscard]] std::string light_name(const Light<S>& light, 
     const Vec3<S> c = light_center(light);
     char at[96];
     std::snprintf(at, sizeof at, "<%g, %g, %g>", double(c.x), double(c.y), double(c.z));
-    return "light " + std::to_string(i) + " (" + (std::holds_alternative<AreaLight<S>>(light) ? "area" : light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + ")";
+    return "light " + std::to_string(i) + " (" + (std::holds_alternative<AreaLight<S>>(light) ? "area" : is_parallel(light) ? "parallel" : light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + ")";
 }
 
 /// Whether some ray leaving `light` can hit object `i`: false only when the light has a cone
@@ -203,11 +203,12 @@ template <class SceneT>
         LightPlan lp;
         const Light<S>& light = lights[l];
         const std::string name = plan_detail::light_name(light, l);
-        if (!(max_component(light_power(light)) > S(0))) {
+        if (!light_is_lit(light)) {
             lp.emits = false;
             lp.reason = name + ": no power";
         } else if (force.lights != EffectSwitch::on) {
-            if (eye)
+            // A parallel light comes from a whole plane, not from near its position: never walled off here.
+            if (eye && !is_parallel(light))
                 if (const auto why = plan_detail::walled_off(scene, *eye, light_center(light), light_radius(light))) {
                     lp.emits = false;
                     lp.reason = name + ": " + *why;
@@ -287,6 +288,14 @@ template <class SceneT>
         const BBox<S> b = scene.object_bounds(only);
         for (std::size_t l = 0; l < lights.size() && convex_lit_outside; ++l) {
             if (!plan.lights[l].emits) continue;
+            if (const auto* parallel = std::get_if<ParallelLight<S>>(&lights[l])) {
+                // Its light starts on its plane: outside when the whole box is in front of it.
+                const Vec3<S> e = b.extent() * S(0.5);
+                const S reach = std::abs(e.x * parallel->direction.x) + std::abs(e.y * parallel->direction.y) +
+                                std::abs(e.z * parallel->direction.z);
+                convex_lit_outside = parallel->plane_distance(b.center()) > reach;
+                continue;
+            }
             const Vec3<S> c = light_center(lights[l]);
             const S r = light_radius(lights[l]);
             convex_lit_outside = !b.overlaps(BBox<S>{c - r, c + r});

@@ -23,6 +23,7 @@
 #include "../material/scatter.hpp"
 #include "../math/rng.hpp"
 #include "../scene/camera.hpp"
+#include "../tracing/photon_hit.hpp"
 
 namespace photon {
 
@@ -109,7 +110,8 @@ template <class SceneT>
             // default) counts the power its photons really bring, not its nominal power.
             double weight = double(emission_weight(lights[l], dir));
             for (unsigned hit = 0; hit < 2; ++hit) {
-                const auto surface = scene.intersect(ray);
+                unsigned passed = 0;
+                const auto surface = photon_intersect(scene, ray, passed);
                 if (!surface) break;
                 if (hit == 0) weight *= double(first_hit_scale(lights[l], surface->hit.point, ray.origin));
                 const Material<S>& material = *surface->material;

@@ -56,6 +56,9 @@ enum class CausticTarget : std::uint8_t {
 struct ObjectOptions {
     CausticTarget caustic_target = CausticTarget::automatic;
     bool casts_shadow = true;  ///< false: invisible to shadow rays (POV-Ray's no_shadow)
+    /// true: photons pass through it (tracing/photon_hit.hpp), as POV-Ray's through a light's
+    /// `looks_like` object; camera and gather rays still see it.
+    bool passes_photons = false;
 };
 
 /// What a ray hit: the geometric hit, the object and its material (the material of the part hit,
@@ -108,10 +111,13 @@ public:
         committed_ = false;
         return static_cast<std::uint32_t>(objects_.size() - 1);
     }
-    /// Adds a light; throws std::invalid_argument if it is invalid.
+    /// Adds a light; throws std::invalid_argument if it is invalid. A parallel light's beam is
+    /// fitted to the objects' ball (environment_ball) on commit(), or now if committed.
     void add_light(const Light<S>& light) {
         validate(light);
         lights_.push_back(light);
+        if (auto* parallel = std::get_if<ParallelLight<S>>(&lights_.back()); parallel && committed_)
+            parallel->fit_beam(environment_ball_);
     }
 
     /// Sets the sky that rays leaving the scene see and that lights it (environment.hpp).
@@ -267,6 +273,8 @@ template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhCon
     bvh_objects_.clear();
     for (std::uint32_t p : bvh_.primitive_indices()) bvh_objects_.push_back(ids[p]);
     environment_ball_ = boxes.empty() ? Ball<S>{} : ball_around(bvh_.bounds());
+    for (auto& light : lights_)  // parallel lights' photons leave from a beam covering that ball
+        if (auto* parallel = std::get_if<ParallelLight<S>>(&light)) parallel->fit_beam(environment_ball_);
     committed_ = true;
 }
 

@@ -223,7 +223,9 @@ template <class SceneT>
     CausticAim<S> aim;
     if (targets.empty()) return aim;
     for (const auto& light : scene.lights()) {
-        aim.cones.push_back(target_cones(light, targets));
+        // A parallel light's photons all travel one way: no cone of directions to aim into (its
+        // caustics come with the global pass, as unaimed ones).
+        aim.cones.push_back(is_parallel(light) ? std::vector<TargetCone<S>>{} : target_cones(light, targets));
         if (const auto& cone = light_cone(light))
             std::erase_if(aim.cones.back(), [&](const TargetCone<S>& t) { return !cones_meet(*cone, t); });
         S sum = 0;

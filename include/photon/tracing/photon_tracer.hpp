@@ -24,6 +24,7 @@
 #include "../photonmap/photon.hpp"
 #include "../scene/media_segment.hpp"
 #include "caustic_targets.hpp"
+#include "photon_hit.hpp"
 #include "light_allocation.hpp"
 
 namespace photon {
@@ -171,7 +172,7 @@ void trace_photon_path(const SceneT& scene, const Light<S>* light, Ray<S> ray, R
                        PhotonBlock& block) {
     bool specular_only = true;
     for (unsigned depth = 0; depth < settings.max_depth; ++depth) {
-        const auto surface = scene.intersect(ray);
+        const auto surface = photon_intersect(scene, ray, block.rays);
         ++block.rays;
         if (!surface) return;
         if (depth == 0 && light) power *= first_hit_scale(*light, surface->hit.point, ray.origin);

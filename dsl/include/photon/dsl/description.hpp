@@ -293,6 +293,8 @@ struct Spotlight {
     SourceLocation at;
 };
 
+struct Object;
+
 /// A `light_source` as POV-Ray reads it: its colour is POV-Ray's brightness, not watts.
 struct LightSource {
     Vector3 position{0.0};
@@ -301,6 +303,11 @@ struct LightSource {
     std::optional<AreaLight> area;
     double fade_distance = 0, fade_power = 0;
     bool shadowless = false, looks_like = false;
+    /// The `looks_like` object, as written (placed at the light by the build step).
+    std::shared_ptr<const Object> looks_like_object;
+    /// POV-Ray's `parallel`: every ray along point_at - position (POV-Ray's default point_at <0,0,1>).
+    bool parallel = false;
+    Vector3 point_at{0, 0, 1};
     bool media_interaction = true, media_attenuation = false;  ///< POV-Ray's defaults
     /// The light's `photons { }` block: POV-Ray shoots reflected and refracted photons by default.
     bool photon_reflection = true, photon_refraction = true, photon_area_light = false;

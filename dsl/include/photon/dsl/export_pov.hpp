@@ -179,6 +179,7 @@ private:
             out_ << "spotlight radius " << num(s.radius) << " falloff " << num(s.falloff) << " tightness "
                  << num(s.tightness) << " point_at " << vec(s.point_at) << '\n';
         }
+        if (l.parallel) indent(level + 1), out_ << "parallel point_at " << vec(l.point_at) << '\n';
         if (l.area) {
             const AreaLight& a = *l.area;
             indent(level + 1);
@@ -196,7 +197,11 @@ private:
         if (l.shadowless) indent(level + 1), out_ << "shadowless\n";
         if (!l.media_interaction) indent(level + 1), out_ << "media_interaction off\n";
         if (l.media_attenuation) indent(level + 1), out_ << "media_attenuation on\n";
-        if (l.looks_like) indent(level + 1), out_ << "// looks_like { ... } is not reproduced (photon ignores it)\n";
+        if (l.looks_like_object) {
+            indent(level + 1), out_ << "looks_like {\n";
+            object(*l.looks_like_object, level + 2);
+            indent(level + 1), out_ << "}\n";
+        }
         indent(level + 1);
         out_ << "photons { reflection " << on_off(l.photon_reflection) << " refraction " << on_off(l.photon_refraction)
              << (l.photon_area_light ? " area_light" : "") << " }\n";

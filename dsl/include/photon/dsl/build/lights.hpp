@@ -2,7 +2,8 @@
 #pragma once
 // POV-Ray's light_source as photon's lights, computing what POV-Ray 3.7 computes: its colour and
 // fade give the radiant intensity and the falloff (none, or POV-Ray's fade), its spotlight the
-// cone's profile, `shadowless` a light without shadow rays, `area_light` photon's AreaLight.
+// cone's profile, `shadowless` a light without shadow rays, `area_light` photon's AreaLight,
+// `parallel` photon's ParallelLight.
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,40 @@ struct PovLightIntensity {
 /// Radiant intensity (W/sr per channel) of a POV-Ray light along its axis (pov_light_intensity).
 [[nodiscard]] inline Vector3 radiant_intensity(const LightSource& l) { return pov_light_intensity(l).intensity; }
 
+/// Adds POV-Ray's parallel light `l` (its intensity clamped to `intensity`): irradiance
+/// pi colour on a surface facing it, what POV-Ray's colour times its brightness of 1 gives
+/// (pov_light_intensity); with a fade, POV-Ray's 2 / (1 + (d / D)^p) of the distance d from the
+/// light's plane (Trace::ComputeOneWhiteLightRay), 2 pi colour with ParallelLight's fade factor.
+/// Its spotlight cone, if any, has no effect, as in POV-Ray 3.7. An area light's emitters each
+/// shine towards point_at in POV-Ray (soft shadows): here one light along the centre's direction.
+template <Scalar S>
+void add_pov_parallel_light(DefaultScene<S>& scene, const LightSource& l, const Transform& t, const SourceLocation& at,
+                            Warnings& warn, const Vector3& intensity, const PovLightIntensity& pov) {
+    const Vector3 position = t.point(l.position);
+    const Vector3 axis = t.point(l.point_at) - position;
+    const auto where = l.written.find("point_at");
+    if (!(glm::length(axis) > 0.0))
+        throw Error(where != l.written.end() ? where->second : l.at, "parallel light: point_at equals the light's position");
+    if (l.area && l.area->size1 * l.area->size2 > 1)
+        warn(l.area->at,
+             "a parallel `area_light` is approximated by one parallel light along its centre's direction (no soft "
+             "shadows): photon has no parallel area lights yet",
+             "approximated light", "area_light");
+    ParallelLight<S> light;
+    light.position = Vec3<S>(position);
+    light.direction = Vec3<S>(glm::normalize(axis));
+    light.irradiance = Rgb<S>(pov.fades ? intensity / (pov.distance * pov.distance) : intensity);
+    if (pov.fades) light.falloff = Falloff<S>::fade(S(pov.distance), S(pov.power));
+    light.casts_shadows = !l.shadowless;
+    light.media_interaction = l.media_interaction;
+    light.media_attenuation = l.media_attenuation;
+    try {
+        scene.add_light(light);
+    } catch (const std::invalid_argument& e) {
+        throw Error(at, e.what());
+    }
+}
+
 /// Adds POV-Ray's `light_source` `l`, placed by `t`, to `scene`: a point light, POV-Ray's grid
 /// for an area light of more than one emitter (a sphere light for `orient`), with POV-Ray's
 /// falloff and spotlight profile. Says what it approximates or
@@ -63,7 +98,9 @@ void add_pov_light(DefaultScene<S>& scene, const LightSource& l, const Transform
     }
     const Vector3 intensity = physical.value;
     const Falloff<S> falloff = pov.fades ? Falloff<S>::fade(S(pov.distance), S(pov.power)) : Falloff<S>::constant(S(1));
-    try {
+    if (l.parallel && !l.written.count("cylinder")) {
+        add_pov_parallel_light(scene, l, t, at, warn, physical.value, pov);
+    } else try {
         std::optional<Cone<S>> cone;
         if (l.spotlight) {
             const Spotlight& sp = *l.spotlight;
@@ -115,9 +152,6 @@ void add_pov_light(DefaultScene<S>& scene, const LightSource& l, const Transform
     } catch (const std::invalid_argument& e) {
         throw Error(at, e.what());
     }
-    if (l.looks_like)
-        warn(item("looks_like"),
-             "`looks_like` is ignored: photon's lights are invisible, as POV-Ray's without it");
     if (!l.photon_reflection || !l.photon_refraction)
         warn(item("photons"),
              "light photons `reflection off` / `refraction off` are ignored: photon traces every "

@@ -106,6 +106,7 @@ private:
         /// POV-Ray keeps the bounds of the objects here: inside a CSG, or in a union it does not
         /// split into its objects (one with a bound or a clip of its own; Parser::Link_To_Frame).
         bool bounds_kept = false;
+        bool passes_photons = false;  ///< inside a light's looks_like object (add_looks_like)
     };
 
     static Inherited inherit(const Object& o, const Inherited& parent) {
@@ -127,13 +128,15 @@ private:
         return {o.texture ? &*o.texture : inherited, o.interior ? &*o.interior : parent.interior,
                 o.photons ? &*o.photons : parent.photons, o.no_shadow || parent.no_shadow,
                 o.transform.then(parent.transform), placement, normal_placement, texture_world,
-                o.interior ? parent.transform : parent.interior_world, {}, false};
+                o.interior ? parent.transform : parent.interior_world, {}, false, parent.passes_photons};
     }
 
     void add(const Object& o, const Inherited& parent) {
         Inherited mine = inherit(o, parent);
-        if (const auto* l = std::get_if<LightSource>(&o.shape))
-            return add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
+        if (const auto* l = std::get_if<LightSource>(&o.shape)) {
+            add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
+            return add_looks_like(*l, mine);
+        }
         if (parent.bounds_kept || pov_keeps_bound(o.shape)) warn_bound(o);
         mine.clips = parent.clips;
         append_clips(o, mine);
@@ -174,9 +177,23 @@ private:
         }
     }
 
+    /// A light's `looks_like` object, as POV-Ray 3.7 places it (Parse_Light_Source): its own
+    /// modifiers, then moved to the light's position, then the light's transformations; with
+    /// no_shadow, and photons pass through it (PH_PASSTHRU_FLAG), so it lights nothing less.
+    void add_looks_like(const LightSource& l, const Inherited& light) {
+        if (!l.looks_like_object) return;
+        Object shape = *l.looks_like_object;
+        shape.transform = shape.transform.then(Transform::translate(l.position));
+        shape.no_shadow = true;
+        Inherited parent = light;
+        parent.passes_photons = true;
+        add(shape, parent);
+    }
+
     ObjectOptions options_for(const Inherited& mine, MaterialId material) {
             ObjectOptions options;
             options.casts_shadow = !mine.no_shadow;
+            options.passes_photons = mine.passes_photons;
             if (mine.photons) {
                 const ObjectPhotons& ph = *mine.photons;
                 options.caustic_target = ph.target ? CausticTarget::on : CausticTarget::off;
@@ -237,6 +254,7 @@ private:
             const Inherited theirs = inherit(child, mine);
             if (const auto* l = std::get_if<LightSource>(&child.shape)) {
                 add_pov_light(*scene_, *l, theirs.transform, child.at, warn_);
+                add_looks_like(*l, theirs);
                 continue;
             }
             if (std::holds_alternative<SkippedShape>(child.shape)) ++skipped_;  // the parser warned

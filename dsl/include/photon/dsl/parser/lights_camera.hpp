@@ -47,7 +47,7 @@ inline Object Parser::parse_light(const Token& kw) {
             is_spot = true;
             spot.at = t.location;
         } else if (w == "point_at") {
-            spot.point_at = parse_vector("the point after `point_at`");
+            spot.point_at = light.point_at = parse_vector("the point after `point_at`");
         } else if (w == "radius" || w == "falloff") {
             SourceLocation at;
             double a = parse_float("the angle in degrees after `" + w + "`", &at);
@@ -102,6 +102,7 @@ inline Object Parser::parse_light(const Token& kw) {
                 parse_modifiers(t, shape);
                 close_block(t, "object modifiers");
                 light.looks_like = true;
+                light.looks_like_object = std::make_shared<const Object>(std::move(shape));
                 continue;
             }
             if (ok.kind != TokenKind::identifier || !is_object_keyword(ok.text))
@@ -110,11 +111,14 @@ inline Object Parser::parse_light(const Token& kw) {
             parse_modifiers(t, shape);
             close_block(t, "object modifiers");
             light.looks_like = true;
+            light.looks_like_object = std::make_shared<const Object>(std::move(shape));
         } else if (w == "media_interaction" || w == "media_attenuation") {
             (w == "media_interaction" ? light.media_interaction : light.media_attenuation) = parse_optional_bool();
         } else if (w == "photons") {
             parse_light_photons(t, light);
-        } else if (w == "parallel" || w == "cylinder") {
+        } else if (w == "parallel") {
+            light.parallel = true;
+        } else if (w == "cylinder") {
             degrade(t.location, degraded::approximated_light, w,
                     "a `" + w + "` light is approximated by a " + (is_spot ? "spotlight" : "point light") +
                         " at the light's position: photon has no " + w + " lights yet");
