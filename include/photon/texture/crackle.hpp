@@ -85,9 +85,8 @@ inline Vec3<double> cell_point(int x, int y, int z) {
 [[nodiscard]] inline double cells_value(const Vec3<double>& p) {
     constexpr double eps = 1.0e-10;  // POV-Ray's EPSILON
     using namespace crackle_detail;
-    return std::min(pattern_rand(std::size_t(hash3d(int(std::floor(p.x + eps)), int(std::floor(p.y + eps)),
-                                                    int(std::floor(p.z + eps))))),
-                    1.0);
+    const auto cell = [](double v) { return noise_detail::lattice_cell(std::floor(v + eps)); };
+    return std::min(pattern_rand(std::size_t(hash3d(cell(p.x), cell(p.y), cell(p.z)))), 1.0);
 }
 
 /// POV-Ray's `crackle` at p, clamped to [0, 1] as POV-Ray does.
@@ -95,7 +94,8 @@ inline Vec3<double> cell_point(int x, int y, int z) {
                                           NoiseGenerator generator = NoiseGenerator::range_corrected) {
     using namespace crackle_detail;
     constexpr double eps = 1.0e-10;
-    const int fx = int(std::floor(p.x - eps)), fy = int(std::floor(p.y - eps)), fz = int(std::floor(p.z - eps));
+    const auto cell = [](double v) { return noise_detail::lattice_cell(std::floor(v - eps)); };
+    const int fx = cell(p.x), fy = cell(p.y), fz = cell(p.z);
     const bool square = c.metric == 2.0, unity = c.metric == 1.0;
     const auto distance = [&](const Vec3<double>& d) {
         if (square) return glm::dot(d, d);

@@ -123,6 +123,16 @@ inline const NoiseTables& noise_tables() noexcept {
 
 inline double scurve(double t) noexcept { return t * t * (3.0 - 2.0 * t); }
 
+/// An integral double as an int, wrapped modulo 2^30 into (-2^30, 2^30): a lattice cell number
+/// without undefined behaviour. Cells within 1e9 of the origin (every coordinate a double can
+/// still texture: past 2^52 it has no fraction left) keep their number, so POV-Ray's patterns are
+/// unchanged there; past it the low 12 bits the lattices use are kept, and a NaN or infinite
+/// coordinate gives cell 0. The 2^30 bound leaves room for the +-1 neighbours the callers add.
+inline int lattice_cell(double integral) noexcept {
+    if (!(std::abs(integral) < 9.0e18)) return 0;
+    return int(std::int64_t(integral) % (std::int64_t(1) << 30));
+}
+
 /// Lattice cell of one coordinate as POV-Ray finds it ("JB fix for the range problem").
 struct LatticeAxis {
     int index;        ///< cell, offset by -NOISE_MIN and masked to 12 bits
@@ -131,8 +141,8 @@ struct LatticeAxis {
 inline LatticeAxis lattice_axis(double x) noexcept {
     constexpr double epsilon = 1.0e-10;
     constexpr int noise_min = -10000;
-    const int tmp = x >= 0 ? int(x) : int(x - (1 - epsilon));
-    return {(tmp - noise_min) & 0xFFF, x - tmp};
+    const double tmp = x >= 0 ? std::trunc(x) : std::trunc(x - (1 - epsilon));
+    return {(lattice_cell(tmp) - noise_min) & 0xFFF, x - tmp};
 }
 
 /// Perlin's gradient noise, in about [-1, 1] (POV-Ray's SolidNoise).
@@ -143,8 +153,8 @@ inline double solid_noise(const Vec3<double>& p) noexcept {
     double r0[3], r1[3];
     for (int k = 0; k < 3; ++k) {
         const double v = p[k] + rollover;
-        const int it = int(std::floor(v));
-        b0[k] = it & (NoiseTables::entries - 1);
+        const double it = std::floor(v);
+        b0[k] = lattice_cell(it) & (NoiseTables::entries - 1);
         b1[k] = (b0[k] + 1) & (NoiseTables::entries - 1);
         r0[k] = v - it;
         r1[k] = r0[k] - 1.0;
