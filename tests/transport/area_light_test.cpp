@@ -8,6 +8,8 @@
 
 #include <photon/photon.hpp>
 
+#include "mode_mean.hpp"
+
 #include <cmath>
 #include <set>
 #include <vector>
@@ -300,24 +302,7 @@ TEST_CASE("area light: photon mapping, SPPM and the path tracer agree", "[light]
                                       .size2 = 4, .jitter = true, .power = Rgb<double>(30)});
     scene.commit();
     const auto camera = PinholeCamera<double>::look_at({-0.8, 1.8, -1.8}, {0.2, 0.2, 0}, {0, 1, 0}, 50, 1.0);
-    const auto mean = [&](RenderMode mode, unsigned spp) {
-        RenderSettings s;
-        s.mode = mode;
-        s.width = s.height = 20;
-        s.samples_per_pixel = spp;
-        s.global_photons = 200'000;
-        s.sppm_passes = 12;
-        s.sppm_photons_per_pass = 100'000;
-        s.threads = 2;
-        s.seed = 4;
-        const RenderResult r = render(scene, camera, s);
-        double sum = 0;
-        for (const auto& p : r.film.pixels()) {
-            REQUIRE(std::isfinite(double(p.x)));
-            sum += p.x;
-        }
-        return sum / double(r.film.pixels().size());
-    };
+    const auto mean = [&](RenderMode mode, unsigned spp) { return photon_test::mode_mean(scene, camera, mode, spp); };
     const double rt = mean(RenderMode::rt, 4), pm = mean(RenderMode::pm, 4), reference = mean(RenderMode::reference, 48),
                  sppm = mean(RenderMode::sppm, 1);
     INFO("rt " << rt << ", pm " << pm << ", reference " << reference << ", sppm " << sppm);

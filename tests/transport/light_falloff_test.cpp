@@ -8,6 +8,8 @@
 
 #include <photon/photon.hpp>
 
+#include "mode_mean.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -175,24 +177,8 @@ TEST_CASE("a light without falloff: photon mapping, SPPM and the path tracer agr
     scene.add_light(PointLight<double>{{0, 1, 0}, Rgb<double>(4 * pi_d), {}, Falloff<double>::constant(1)});
     scene.commit();
     const auto camera = PinholeCamera<double>::look_at({-0.5, 2, -1.5}, {0.5, 0.3, 0}, {0, 1, 0}, 50, 1.0);
-    const auto mean = [&](RenderMode mode, unsigned spp) {
-        RenderSettings s;
-        s.mode = mode;
-        s.width = s.height = 24;
-        s.samples_per_pixel = spp;
-        s.global_photons = 200'000;
-        s.sppm_passes = 16;
-        s.sppm_photons_per_pass = 100'000;
-        s.threads = 2;
-        s.seed = 3;
-        const RenderResult r = render(scene, camera, s);
-        double sum = 0;
-        for (const auto& p : r.film.pixels()) {
-            REQUIRE(std::isfinite(double(p.x)));
-            sum += p.x;
-        }
-        return sum / double(r.film.pixels().size());
-    };
+    const photon_test::ModeMeanSettings settings{.size = 24, .sppm_passes = 16, .seed = 3};
+    const auto mean = [&](RenderMode mode, unsigned spp) { return photon_test::mode_mean(scene, camera, mode, spp, settings); };
     const double rt = mean(RenderMode::rt, 4), pm = mean(RenderMode::pm, 4), reference = mean(RenderMode::reference, 64),
                  sppm = mean(RenderMode::sppm, 1);
     INFO("rt " << rt << ", pm " << pm << ", reference " << reference << ", sppm " << sppm);
