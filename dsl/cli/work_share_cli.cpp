@@ -20,7 +20,7 @@ std::unique_ptr<photon::WorkShare> open_work_share() {
 }
 
 void abort_ranks(photon::WorkShare& share, const char* what) {
-    std::fprintf(stderr, "photon: error on rank %u of %u: %s; stopping every rank\n", share.rank(), share.ranks(), what);
+    std::fprintf(stderr, "photon: error on rank %u of %u, stopping every rank: %s\n", share.rank(), share.ranks(), what);
     std::fflush(stderr);
     MPI_Abort(MPI_COMM_WORLD, 1);
     std::abort();  // MPI_Abort does not return

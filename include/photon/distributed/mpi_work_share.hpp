@@ -10,6 +10,13 @@
 //   auto result = photon::render(scene, camera, settings);   // the whole image on every rank
 //   if (share.rank() == 0) write(result.film);
 
+// The C API only: not the deprecated C++ bindings some MPIs pull in (and link) by default.
+#ifndef OMPI_SKIP_MPICXX
+#define OMPI_SKIP_MPICXX 1
+#endif
+#ifndef MPICH_SKIP_MPICXX
+#define MPICH_SKIP_MPICXX 1
+#endif
 #include <mpi.h>
 
 #include <algorithm>
