@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages photon needs for a purpose, and nothing else:
 #   install-deps.sh render   compiler, CMake, GLM, OpenImageIO, CLI11 (enough to render)
-#   install-deps.sh test     render + Catch2, POV-Ray and its sample scenes (scene files are checked
+#   install-deps.sh test     render + Catch2, Open MPI (the mpi: tests of -DPHOTON_MPI=ON), POV-Ray and its sample scenes (scene files are checked
 #                            in it; photon reads its samples), clang for
 #                            the sanitizer build and the fuzzer
 #   install-deps.sh bench    test + Google Benchmark, nanoflann, Embree, OpenImageIO tools
@@ -13,7 +13,7 @@ set -euo pipefail
 purpose=${1:-render}
 # openimageio-tools is needed to build: Debian's OpenImageIO CMake config checks that its tools exist.
 render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev libfreetype-dev libpng-dev)
-test=("${render[@]}" catch2 povray povray-examples clang libclang-rt-14-dev)
+test=("${render[@]}" catch2 povray povray-examples clang libclang-rt-14-dev libopenmpi-dev openmpi-bin)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
 compare=("${render[@]}" povray python3-matplotlib)
 case "$purpose" in

@@ -11,7 +11,7 @@ jobs=$(nproc)
 scripts/install-deps.sh test
 stamp() { echo "test.sh: $* ($SECONDS s)"; }
 
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_ASSERTS=ON
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_ASSERTS=ON -DPHOTON_MPI=ON  # MPI: the mpi: tests
 cmake --build "$build" -j "$jobs"
 ctest --test-dir "$build" --output-on-failure -j "$jobs"
 stamp "release suite passed"

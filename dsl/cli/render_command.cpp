@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "load_image_io.hpp"
 #include "scene_report.hpp"
+#include "work_share_cli.hpp"
 
 #include <photon/dsl/parser.hpp>
 
@@ -95,7 +96,10 @@ private:
 
 }  // namespace
 
-int run_render(SceneOptions& so, const RenderOptions& ro) {
+/// The render, alone or as one of the ranks of `share`.
+static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShare* share) {
+    const bool writer = !share || share->rank() == 0;
+    if (!writer) so.quiet = true;
     const fs::path output(ro.output);
     photon::image_module::check_writable_image_path(output);
     dsl::BuildOptions bo;
@@ -159,14 +163,21 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
                              error);
         };
     }
-    settings.cancel = &cancel_requested;
-    struct sigaction action {};
-    action.sa_handler = on_interrupt;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    if (share) {
+        // Ranks must agree on every phase they run: no cancelling one of them (mpirun stops all).
+        settings.share = share;
+    } else {
+        settings.cancel = &cancel_requested;
+        struct sigaction action {};
+        action.sa_handler = on_interrupt;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, nullptr);
+        sigaction(SIGTERM, &action, nullptr);
+    }
 
     photon::RenderResult result = photon::render(built.scene, built.camera, settings);
+    const std::string exchanges = share ? exchange_stats(*share) : std::string();
+    if (!writer) return EXIT_SUCCESS;
     // A file with assumed_gamma G rendered numbers of a gamma-G space; the image is linear.
     photon::decode_working_gamma(result.film, built.working_gamma);
     const bool partial = result.stats.partial || cancel_requested.load();
@@ -206,8 +217,19 @@ int run_render(SceneOptions& so, const RenderOptions& ro) {
     if (!so.quiet || so.strict)
         for (const photon::RenderWarning& w : result.stats.warnings)
             if (!w.object) std::cerr << "photon: warning: " << w.message << '\n';
-    if (!ro.no_stats && !so.quiet) std::cout << photon::format_stats(result.stats);
+    if (!ro.no_stats && !so.quiet) std::cout << photon::format_stats(result.stats) << exchanges;
     return partial ? exit_interrupted : EXIT_SUCCESS;
+}
+
+int run_render(SceneOptions& so, const RenderOptions& ro) {
+    // Under mpirun every rank renders its share; rank 0 alone reports and writes the image.
+    const std::unique_ptr<photon::WorkShare> share = open_work_share();
+    if (!share) return render_as(so, ro, nullptr);
+    try {
+        return render_as(so, ro, share.get());
+    } catch (const std::exception& e) {
+        abort_ranks(*share, e.what());  // the other ranks may wait in an exchange: stop them all
+    }
 }
 
 }  // namespace photon::cli

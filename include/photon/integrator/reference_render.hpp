@@ -22,6 +22,7 @@
 #include "../math/rng.hpp"
 #include "../math/sampling.hpp"
 #include "../parallel/parallel_for.hpp"
+#include "../parallel/work_share.hpp"
 #include "../scene/camera.hpp"
 #include "path_tracer.hpp"
 #include "render_settings.hpp"
@@ -62,6 +63,11 @@ template <class SceneT>
     std::vector<unsigned> rounds_of_row(height, 0);  // rows of a cancelled round have one round fewer
     const unsigned most_rounds = budget ? SettingsLimits::max_samples / spp : 1u;
 
+    // Every rank's rows on every rank: the sums and the rounds each row has.
+    auto share_sums = [&] {
+        for (auto& s : sums) share_runs(settings.share, std::span(s), width, "reference sums");
+        share_runs(settings.share, std::span(rounds_of_row), 1, "reference sums");
+    };
     // The two half-images and their mean from the rounds each row has.
     auto images = [&](bool with_error_film) {
         struct {
@@ -98,8 +104,10 @@ template <class SceneT>
     unsigned round = 0;
     bool cancelled = false;
     while (round < most_rounds && !cancelled) {
-        if (budget && settings.time_limit > 0 && round >= 2 &&
-            seconds_since(start) + last_round_seconds > settings.time_limit) {
+        // Rank 0's clock decides for every rank (parallel/work_share.hpp).
+        if (agree(settings.share, budget && settings.time_limit > 0 && round >= 2 &&
+                                      seconds_since(start) + last_round_seconds > settings.time_limit,
+                  "reference budget")) {
             stats.stopped_by = "time limit";
             break;
         }
@@ -116,6 +124,7 @@ template <class SceneT>
                     cancelled = true;
                     break;
                 }
+                if (!owns(settings.share, y)) continue;  // another rank's row
                 for (unsigned x = 0; x < width; ++x) {
                     const std::uint64_t pixel = std::uint64_t(y) * width + x;
                     ctx.rng = Pcg32(seed, pixel);
@@ -134,7 +143,7 @@ template <class SceneT>
                 ++rounds_of_row[y];
                 if (settings.progress && !budget) {
                     const std::lock_guard lock(merge);
-                    settings.progress(RenderPhase::image, double(++rows_done) / double(height));
+                    settings.progress(RenderPhase::image, double(++rows_done) / double(owned_count(settings.share, height)));
                 }
             }
             const std::lock_guard lock(merge);
@@ -145,7 +154,8 @@ template <class SceneT>
         ++round;
         if (!budget) break;
         const bool wants_error = settings.target_error > 0 || settings.on_pass;
-        if (!wants_error) continue;
+        if (!agree(settings.share, wants_error, "reference budget")) continue;  // rank 0's callbacks decide for all
+        share_sums();
         const auto now = images(false);
         if (settings.on_pass) settings.on_pass({round, most_rounds, seconds_since(start), now.error});
         if (settings.target_error > 0 && now.error.available && now.error.relative_rmse <= settings.target_error) {
@@ -157,6 +167,7 @@ template <class SceneT>
     // A cancelled first round leaves rows unrendered: the image is partial (black there). A
     // later one leaves a whole image of fewer rounds on some rows: not partial, just less converged.
     stats.partial = cancelled && round == 0;
+    share_sums();
     auto result = images(error_film != nullptr);
     stats.error = result.error;
     if (error_film) *error_film = std::move(result.error_film);

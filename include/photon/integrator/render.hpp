@@ -61,8 +61,10 @@ template <class SceneT>
     const EstimateSettings& es = settings.global_estimate;
     std::mutex report;
     std::size_t done = 0;
-    parallel_for(samples.size(), 4096, settings.threads, [&](std::size_t b, std::size_t e) {
+    constexpr std::size_t grain = 4096;
+    parallel_for(samples.size(), grain, settings.threads, [&](std::size_t b, std::size_t e) {
         if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
+        if (!owns(settings.share, b / grain)) return;
         ShadingContext ctx;
         for (std::size_t i = b; i < e; ++i) {
             const Photon& p = photons[i * stride];
@@ -80,11 +82,13 @@ template <class SceneT>
         if (settings.progress) {
             const std::lock_guard lock(report);
             done += e - b;
-            settings.progress(RenderPhase::precompute, double(done) / double(samples.size()));
+            settings.progress(RenderPhase::precompute,
+                              double(done) / double(owned_count(settings.share, (samples.size() + grain - 1) / grain) * grain));
         }
         const std::lock_guard lock(report);
         rays += ctx.rays;
     });
+    share_runs(settings.share, std::span(samples), grain, "precompute");
     return PrecomputedIrradiance(samples);
 }
 
@@ -123,7 +127,8 @@ template <class SceneT>
                                .seed = settings.seed,
                                .threads = settings.threads,
                                .progress = report(RenderPhase::caustic_photons),
-                               .cancel = settings.cancel};
+                               .cancel = settings.cancel,
+                               .share = settings.share};
     pass.light_emits = plan.light_emits();
     const bool caustics = plan.caustics.present && settings.effects.caustics != EffectSwitch::off;
     const auto aim = caustic_aim(scene, plan.hidden_caustic_objects);
@@ -205,6 +210,7 @@ template <class SceneT>
                 cancelled = true;
                 return;
             }
+            if (!owns(settings.share, y)) continue;  // another rank's row
             for (unsigned x = 0; x < settings.width; ++x) {
                 const std::uint64_t pixel = std::uint64_t(y) * settings.width + x;
                 ctx.rng = Pcg32(settings.seed ^ 0x706978656c73ULL, pixel);
@@ -221,13 +227,14 @@ template <class SceneT>
             }
             if (settings.progress) {
                 const std::lock_guard lock(merge);
-                settings.progress(RenderPhase::image, double(++rows_done) / double(settings.height));
+                settings.progress(RenderPhase::image, double(++rows_done) / double(owned_count(settings.share, settings.height)));
             }
         }
         const std::lock_guard lock(merge);
         stats.rays += ctx.rays;
         stats.estimates += ctx.estimates;
     });
+    share_runs(settings.share, std::span(film.pixels()), settings.width, "image");
     stats.partial = cancelled;
     stats.render_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return film;
@@ -250,15 +257,21 @@ template <class SceneT>
     stats.height = settings.height;
     stats.threads = resolve_threads(settings.threads);
     stats.mode = to_string(settings.mode);
+    auto count_every_rank = [&] {  // each rank counted the rays of its own share of the work
+        stats.rays = sum_over_ranks(settings.share, stats.rays, "statistics");
+        stats.estimates = sum_over_ranks(settings.share, stats.estimates, "statistics");
+    };
     if (settings.mode == RenderMode::reference)
         if (std::string blind = reference_blind_spot(scene); !blind.empty()) stats.warnings.push_back({std::move(blind)});
     if (settings.mode == RenderMode::sppm) {  // passes of its own (integrator/sppm.hpp)
         result.film = render_sppm(scene, camera, settings, stats, {}, &result.error_image);
+        count_every_rank();
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
     if (settings.mode == RenderMode::reference) {  // no photon maps; rounds of its own (reference_render.hpp)
         result.film = render_reference(scene, camera, settings, stats, &result.error_image);
+        count_every_rank();
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
@@ -276,6 +289,7 @@ template <class SceneT>
         // A light the plan silenced sends nothing the camera sees: no shadow rays to it either.
         result.film = render_image(scene, camera, maps, obeyed, stats, plan.planned ? plan.light_emits() : std::vector<bool>{});
     }
+    count_every_rank();
     stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
 }

@@ -11,6 +11,7 @@
 #include "../estimator/density_estimate.hpp"
 #include "../film/error_estimate.hpp"
 #include "../light/light.hpp"
+#include "../parallel/work_share.hpp"
 #include "effect_switches.hpp"
 
 namespace photon {
@@ -123,6 +124,9 @@ struct RenderSettings {
     /// When set to true during a render, the current pass stops soon, later passes are skipped,
     /// and the result is marked partial (pixels not rendered are black).
     const std::atomic<bool>* cancel = nullptr;
+    /// The processes this render is shared among (parallel/work_share.hpp); null: this one alone.
+    /// The image is the same either way; every rank returns the whole of it.
+    WorkShare* share = nullptr;
 };
 
 /// Upper bounds of the settings (validate). Sample counts are rounded up to n x n grids, which must

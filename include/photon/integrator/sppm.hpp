@@ -31,6 +31,7 @@
 #include "../film/film.hpp"
 #include "../light/light.hpp"
 #include "../parallel/parallel_for.hpp"
+#include "../parallel/work_share.hpp"
 #include "../photonmap/kdtree.hpp"
 #include "../scene/media_segment.hpp"
 #include "../tracing/light_allocation.hpp"
@@ -129,6 +130,7 @@ template <class SceneT>
     const std::uint64_t seed = sppm_pass_seed(settings.seed, sppm_photon_salt, pass);
     parallel_for(blocks, 1, settings.threads, [&](std::size_t b0, std::size_t b1) {
         for (std::size_t b = b0; b < b1; ++b) {
+            if (!owns(settings.share, b)) continue;  // another rank's block
             SppmPhotonPass& block = out[b];
             for (std::size_t i = b * sppm_photon_block; i < std::min(n, (b + 1) * sppm_photon_block); ++i) {
                 Pcg32 rng(seed, i);
@@ -171,6 +173,15 @@ template <class SceneT>
             }
         }
     });
+    if (!single(settings.share)) {  // every rank's blocks, in block order on every rank
+        std::vector<std::vector<SppmPhoton>> hits(blocks);
+        std::vector<std::vector<std::uint64_t>> rays(blocks);
+        for (std::size_t b = 0; b < blocks; ++b)
+            if (owns(settings.share, b)) hits[b] = std::move(out[b].hits), rays[b] = {out[b].rays};
+        share_lists(settings.share, hits, "sppm photons");
+        share_lists(settings.share, rays, "sppm photons");
+        for (std::size_t b = 0; b < blocks; ++b) out[b].hits = std::move(hits[b]), out[b].rays = rays[b].empty() ? 0 : rays[b][0];
+    }
     SppmPhotonPass all;
     std::size_t total = 0;
     for (const auto& b : out) total += b.hits.size();
@@ -289,7 +300,9 @@ template <class SceneT>
         }
         // Stop before a pass that would end past the time limit (after two: an image with an
         // error estimate comes first).
-        if (settings.time_limit > 0 && pass >= 2 && seconds_since(start) + last_pass_seconds > settings.time_limit) {
+        // Rank 0's clock decides for every rank (parallel/work_share.hpp).
+        if (agree(settings.share, settings.time_limit > 0 && pass >= 2 && seconds_since(start) + last_pass_seconds > settings.time_limit,
+                  "sppm budget")) {
             stats.stopped_by = "time limit";
             break;
         }
@@ -308,6 +321,7 @@ template <class SceneT>
         parallel_for(height, 1, settings.threads, [&](std::size_t y0, std::size_t y1) {
             ShadingContext ctx;
             for (std::size_t y = y0; y < y1; ++y) {
+                if (!owns(settings.share, y)) continue;  // another rank's row
                 for (unsigned x = 0; x < width; ++x) {
                     const std::uint64_t index = std::uint64_t(y) * width + x;
                     SppmPixel& px = pixels[index];
@@ -348,7 +362,9 @@ template <class SceneT>
         last_pass_seconds = seconds_since(pass_start);
         if (settings.progress) settings.progress(RenderPhase::sppm_pass, double(pass) / double(settings.sppm_passes));
         const bool wants_error = settings.target_error > 0 || settings.on_pass;
-        if (!on_pass && !wants_error) continue;
+        // Every rank makes the same exchanges: rank 0's callbacks decide for all.
+        if (!agree(settings.share, on_pass || wants_error, "sppm budget")) continue;
+        share_runs(settings.share, std::span(pixels), width, "sppm pixels");  // the other half is whole since the last pass
         const detail::SppmImage image = detail::sppm_image(halves, width, height, pass, false);
         if (on_pass) on_pass(pass, image.film);
         if (settings.on_pass) settings.on_pass({pass, settings.sppm_passes, seconds_since(start), image.error});
@@ -357,6 +373,7 @@ template <class SceneT>
             break;
         }
     }
+    for (auto& h : halves) share_runs(settings.share, std::span(h), width, "sppm pixels");
     double radius_sum = 0;
     std::size_t with_radius = 0;
     for (const auto& h : halves)

@@ -21,6 +21,7 @@
 #include "../material/scatter.hpp"
 #include "../math/octahedral.hpp"
 #include "../parallel/parallel_for.hpp"
+#include "../parallel/work_share.hpp"
 #include "../photonmap/photon.hpp"
 #include "../scene/media_segment.hpp"
 #include "caustic_targets.hpp"
@@ -54,6 +55,7 @@ struct PhotonTracingSettings {
     unsigned threads = 0;         ///< 0: all hardware threads
     std::function<void(double)> progress{};  ///< fraction of photons emitted; serialised calls
     const std::atomic<bool>* cancel = nullptr;  ///< true: stop soon, the result is incomplete
+    WorkShare* share = nullptr;  ///< ranks tracing the blocks between them (parallel/work_share.hpp)
 };
 
 /// Output of one pass.
@@ -131,6 +133,7 @@ TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t sa
                 cancelled = true;
                 return;
             }
+            if (!owns(settings.share, b)) continue;
             const std::size_t end = std::min(n, (b + 1) * photon_block);
             for (std::size_t i = b * photon_block; i < end; ++i) {
                 Pcg32 rng(settings.seed ^ salt, i);
@@ -138,10 +141,28 @@ TracedPhotons run_blocks(const PhotonTracingSettings& settings, std::uint64_t sa
             }
             if (settings.progress) {
                 const std::lock_guard lock(report);
-                settings.progress(double(++blocks_done) / double(blocks));
+                settings.progress(double(++blocks_done) / double(owned_count(settings.share, blocks)));
             }
         }
     });
+    if (!single(settings.share)) {  // every rank's blocks, in block order on every rank
+        std::vector<std::vector<Photon>> photons(blocks), unaimed(blocks);
+        std::vector<std::vector<std::uint16_t>> normals(blocks);
+        std::vector<std::vector<std::uint64_t>> rays(blocks);
+        for (std::size_t b = 0; b < blocks; ++b)
+            if (owns(settings.share, b)) {
+                photons[b] = std::move(out[b].photons), normals[b] = std::move(out[b].normals);
+                unaimed[b] = std::move(out[b].unaimed_caustics), rays[b] = {out[b].rays};
+            }
+        share_lists(settings.share, photons, "photons");
+        share_lists(settings.share, normals, "photons");
+        share_lists(settings.share, unaimed, "photons");
+        share_lists(settings.share, rays, "photons");
+        for (std::size_t b = 0; b < blocks; ++b) {
+            out[b].photons = std::move(photons[b]), out[b].normals = std::move(normals[b]);
+            out[b].unaimed_caustics = std::move(unaimed[b]), out[b].rays = rays[b].empty() ? 0 : rays[b][0];
+        }
+    }
     TracedPhotons result;
     result.cancelled = cancelled;
     std::size_t total = 0;
