@@ -26,7 +26,7 @@
 #                   The judge is the path tracer for scenes without mirrors and glass (it converges
 #                   faster there), sppm for the others (the path tracer cannot see a point light's
 #                   caustics and finds a small light's ones by chance).
-#   --sweep         which curves (default all four)
+#   --sweep         which curves (default all four); the others keep their rows from an earlier run
 #   --budgets       small: fewer pm settings and budgets (a quick look); full (default)
 #   --threads       threads of every render, photon's and POV-Ray's (default 2)
 # The judges are cached under DIR/povray-accuracy/judges, keyed by scene file, size, judge settings
@@ -136,7 +136,8 @@ make_judge() {
 pm_runs() {
   if [ "$budgets" = small ]; then
     printf '%s\n' "fg64 50k|--final-gather 64 --global-photons 50000 --irradiance-cache 0.4" \
-      "default|" "fg1024 1M|--final-gather 1024 --global-photons 1000000"
+      "fg128 100k|--final-gather 128 --global-photons 100000" "default|" \
+      "fg1024 1M|--final-gather 1024 --global-photons 1000000" "default spp16|--spp 16"
     return
   fi
   printf '%s\n' \
@@ -147,7 +148,10 @@ pm_runs() {
     "fg256 1M|--global-photons 1000000" \
     "fg256 ic0.1|--irradiance-cache 0.1" \
     "fg1024 1M|--final-gather 1024 --global-photons 1000000" \
-    "fg1024 1M ic0.1|--final-gather 1024 --global-photons 1000000 --irradiance-cache 0.1"
+    "fg1024 1M ic0.1|--final-gather 1024 --global-photons 1000000 --irradiance-cache 0.1" \
+    "fg128 100k spp16|--final-gather 128 --global-photons 100000 --spp 16" \
+    "default spp16|--spp 16" \
+    "fg256 ic0.1 spp36|--irradiance-cache 0.1 --spp 36"
 }
 sppm_runs() { if [ "$budgets" = small ]; then echo "4 16"; else echo "4 16 64 256"; fi; }
 reference_runs() { if [ "$budgets" = small ]; then echo "16 64"; else echo "16 64 256 1024"; fi; }
@@ -175,7 +179,11 @@ for entry in "${scene_list[@]}"; do
   echo "== $scene, ${width}x$height"
   make_judge
   echo "   judge: $judge_what, $judge_cpu CPU-s; noise floor (relative MSE) $judge_floor"
+  # A series not swept this time keeps its rows from an earlier run (same judge: same floor).
+  kept=""
+  [ -f "$csv" ] && kept=$(awk -F, -v s=",$sweep," 'NR > 1 && index(s, "," $2 ",") == 0' "$csv")
   echo "scene,series,setting,cpu_s,relative_mse,net_relative_mse" >"$csv"
+  [ -z "$kept" ] || echo "$kept" >>"$csv"
   base=(render "$scene_file" --width "$width" --height "$height" --threads "$threads" --seed 7)  # not a judge's seed
   if sweeps pm; then
     while IFS='|' read -r label options; do
@@ -229,8 +237,8 @@ for entry in "${scene_list[@]}"; do
     echo "photon $(git rev-parse --short HEAD)$(git diff --quiet HEAD -- include dsl src tools || echo ' (modified)')," \
       "POV-Ray $pov_version, $threads threads each on $(nproc) cores ($cpu_model), $(date -u '+%Y-%m-%d %H:%M') UTC;" \
       "load average when the scene was done: $(uptime | sed 's/.*load average: //') (the machine is shared; CPU time is what is compared)." \
-      "Judge: $judge_what ($judge_cpu CPU-s); its noise floor, a relative MSE of $judge_floor, is part of every number below" \
-      "(the net column subtracts it). Data: [accuracy-vs-povray/$tag.csv](accuracy-vs-povray/$tag.csv)."
+      "Judge: $judge_what ($judge_cpu CPU-s); its noise floor, a relative MSE of $judge_floor, is part of every measured error" \
+      "(subtracted in the plot and the first table: the net column). Data: [accuracy-vs-povray/$tag.csv](accuracy-vs-povray/$tag.csv)."
     echo
     echo "![$scene: relative MSE against CPU time](images/accuracy/$tag-vs-povray.png)"
     echo
