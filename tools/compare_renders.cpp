@@ -4,6 +4,7 @@
 //
 //   photon-compare SCENE.pov A.exr B.exr [--region NAME=X0,Y0,Z0,X1,Y1,Z1,AXIS]... [--side-by-side OUT.jpg]
 //                  [--mask OUT.png] [--summary OUT.tsv] [--exposure E] [--labels A,B] [--block N]
+//                  [--relative-mse OUT.txt]
 //
 // Both images must hold linear radiance of the same size. Regions are pieces of surface named in
 // scene coordinates (an axis-aligned box and the direction the surface faces, e.g. the Cornell
@@ -16,6 +17,11 @@
 // --block N also measures the RMSE of the N x N block means (whole blocks only): per-pixel noise
 // averages away in a block, low-frequency bias and blotches do not. The summary line then gains
 // three fields: block RMSE, the largest |A / B - 1| of the regions' channel means, and that region.
+//
+// --relative-mse writes the relative MSE of A against B as the judge: the sum over pixels and
+// channels of (A - B)^2 over the sum of B^2 (docs/accuracy.md's "normalised MSE"; the accuracy
+// studies against POV-Ray use it), one number in its own file so that the summary line keeps its
+// fields.
 
 #include <CLI/CLI.hpp>
 
@@ -178,7 +184,8 @@ Film side_by_side(const std::vector<const Film*>& films, unsigned gap) {
 int main(int argc, char** argv) {
     CLI::App app{"photon-compare: mean radiance per surface, RMSE and PSNR of two linear renders of one scene",
                  "photon-compare"};
-    std::string scene_file, a_file, b_file, side_file, mask_file, summary_file, labels = "photon,POV-Ray";
+    std::string scene_file, a_file, b_file, side_file, mask_file, summary_file, relative_file,
+        labels = "photon,POV-Ray";
     std::vector<std::string> region_specs;
     float exposure = 1.0f;
     unsigned block = 0;
@@ -191,6 +198,7 @@ int main(int argc, char** argv) {
     app.add_option("--side-by-side", side_file, "Write A | B | difference (8-bit, e.g. .jpg)");
     app.add_option("--mask", mask_file, "Write the region of every pixel as colours, for checking the regions");
     app.add_option("--summary", summary_file, "Write rmse, psnr, mean A, mean B as one tab-separated line");
+    app.add_option("--relative-mse", relative_file, "Write sum (A - B)^2 / sum B^2 over pixels and channels");
     app.add_option("--exposure", exposure, "Exposure of the side-by-side picture")->check(CLI::PositiveNumber);
     app.add_option("--labels", labels, "Names of A and B in the table (comma-separated)");
     app.add_option("--block", block, "Also the RMSE of N x N block means; adds it and the worst region bias to --summary")
@@ -226,13 +234,14 @@ int main(int argc, char** argv) {
 
         // Whole image: RMSE over all pixels and channels; PSNR against a peak of 1 W m^-2 sr^-1, the
         // radiance an 8-bit picture at exposure 1 shows as white.
-        double squared = 0.0;
+        double squared = 0.0, squared_b = 0.0;
         Accumulator whole;
         std::vector<Accumulator> per_region(regions.size());
         for (std::size_t i = 0; i < a.pixels().size(); ++i) {
             const Rgb<double> pa(a.pixels()[i]), pb(b.pixels()[i]);
             const Rgb<double> d = pa - pb;
             squared += glm::dot(d, d);
+            squared_b += glm::dot(pb, pb);
             whole.a += pa, whole.b += pb, ++whole.pixels;
             if (label[i] >= 0) {
                 auto& r = per_region[std::size_t(label[i])];
@@ -278,6 +287,11 @@ int main(int argc, char** argv) {
             if (block > 0) out << '\t' << fixed(rmse_blocks, 4) << '\t' << fixed(worst_bias, 4) << '\t' << worst_region;
             out << '\n';
             if (!out) throw std::runtime_error("cannot write " + summary_file);
+        }
+        if (!relative_file.empty()) {
+            std::ofstream out(relative_file);
+            out << std::setprecision(6) << (squared_b > 0.0 ? squared / squared_b : 0.0) << '\n';
+            if (!out) throw std::runtime_error("cannot write " + relative_file);
         }
         if (!side_file.empty()) {
             const Film diff = difference_picture(a, b, 0.1 * channel_mean(mean_b));
