@@ -166,6 +166,15 @@ TEST_CASE("pm's estimated error, against a short sppm run, is within a factor of
         CHECK(r.error_image.width() == s.width);
         CHECK(r.stats.pm_steps == 1);
     }
+    // With the judge ended by passes and noise, not time, the estimate is the same on any thread count.
+    s.threads = 1;
+    const RenderResult one = render(f.scene, f.camera, s);
+    s.threads = 2;
+    const RenderResult two = render(f.scene, f.camera, s);
+    CHECK(identical(one.film, two.film));
+    CHECK(identical(one.error_image, two.error_image));
+    CHECK(one.stats.error.normalised_mse == two.stats.error.normalised_mse);
+
     s.pm_error_passes = 0;  // no judge: no estimate
     const RenderResult none = render(f.scene, f.camera, s);
     CHECK_FALSE(none.stats.error.available);

@@ -15,14 +15,17 @@
 //
 // Budgets (time_limit, target_error): pm renders again with twice the photons and twice the
 // gather rays, each render compared with the same judge (run again, another seed, when pm's error
-// falls below its noise), until the target is met, the next render would pass the time limit, or
-// the photon counts reach their limits. The image is the last render's, not an average: doubling
+// falls below its noise), until the target is met (or the estimate sits at its floor, below what
+// the judge resolves), the estimate stalls above the target (two renders without a 10% fall: the
+// judge's own error is reached), the next render would pass the time limit, or the photon counts
+// reach their limits or the memory's. The image is the last render's, not an average: doubling
 // the photons shrinks pm's bias, which averaging renders with the same counts cannot.
 
 #include <array>
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <limits>
 
 #include "../film/error_estimate.hpp"
 #include "sppm.hpp"
@@ -128,7 +131,8 @@ template <class SceneT, class RenderOnce>
     RenderSettings step = settings;
     PmJudge judge;
     Film image;
-    unsigned steps = 0;
+    unsigned steps = 0, stalled = 0;
+    double lowest = std::numeric_limits<double>::infinity();
     const RenderStats base = stats;
     SppmStats judge_stats;
     for (;;) {
@@ -185,6 +189,18 @@ template <class SceneT, class RenderOnce>
         if (settings.target_error > 0 && stats.error.at_floor) {  // below what the judge resolves: met, as far as it can tell
             stats.stopped_by = "target error (below the judge's resolution)";
             break;
+        }
+        // The estimate cannot fall below the judge's own error (its bias, its noise estimate's
+        // error): when two renders in a row did not bring it 10% below its lowest, more photons
+        // are no longer seen to pay, and a target below that level would never be met.
+        if (stats.error.available) {
+            if (stats.error.relative_rmse < 0.9 * lowest) {
+                lowest = stats.error.relative_rmse;
+                stalled = 0;
+            } else if (++stalled == 2 && settings.target_error > 0) {
+                stats.stopped_by = "estimate stalled (at the short sppm run's resolution)";
+                break;
+            }
         }
         // The next render takes about twice this one (twice the photons and gather rays).
         if (settings.time_limit > 0 && since_start() + 2 * step_seconds > settings.time_limit) {

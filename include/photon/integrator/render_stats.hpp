@@ -90,7 +90,7 @@ struct RenderStats {
     std::uint64_t pm_global_photons = 0;
     unsigned pm_gather_rays = 0;
     /// Why a progressive render (or pm under a budget) stopped: "passes done", "time limit", "target
-    /// error", "cancelled"; pm also "photon limit", "memory limit".
+    /// error", "cancelled"; pm also "photon limit", "memory limit", "estimate stalled ...".
     std::string stopped_by;
 };
 
