@@ -51,7 +51,8 @@ struct RenderOptions {
     float exposure = 1.0f;
     bool no_stats = false;
     bool no_mis = false;
-    std::string error_image;  ///< sppm and reference: where to write the per-pixel error estimate
+    bool no_error_estimate = false;  ///< pm: no short sppm run to estimate its error
+    std::string error_image;  ///< pm, sppm and reference: where to write the per-pixel error estimate
 };
 
 int run_render(SceneOptions& so, const RenderOptions& ro);

@@ -83,8 +83,12 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber);
     render->add_flag("--no-stats", ro.no_stats, "Do not print the statistics table");
     render->add_option("--error-image", ro.error_image,
-                       "sppm and reference: also write each pixel's estimated error |A - B| / 2 of the two "
-                       "independent half-images (an .exr keeps it linear)");
+                       "pm, sppm and reference: also write each pixel's estimated error: |A - B| / 2 of the two "
+                       "independent half-images (sppm, reference), or pm's distance to its short sppm judge with "
+                       "the judge's noise taken out (an .exr keeps it linear)");
+    render->add_flag("--no-error-estimate", ro.no_error_estimate,
+                     "pm: do not estimate the error (it runs sppm for up to half pm's own time again to measure "
+                     "pm's noise and bias; needed by --target-error)");
     render->add_flag("--no-mis", ro.no_mis,
                      "reference: direct light by shadow rays alone, without multiple importance sampling "
                      "(to measure what it gains)");

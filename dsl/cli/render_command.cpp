@@ -121,17 +121,29 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     photon::RenderSettings& settings = built.settings;
     if (ro.no_mis) settings.reference_mis = false;
     const bool budget = settings.time_limit > 0 || settings.target_error > 0;
-    if (budget && settings.mode != photon::RenderMode::sppm && settings.mode != photon::RenderMode::reference)
-        std::cerr << "photon: warning: --time and --target-error apply to the sppm and reference modes; mode "
+    const bool pm = settings.mode == photon::RenderMode::pm;
+    const bool estimates = settings.mode == photon::RenderMode::sppm || settings.mode == photon::RenderMode::reference || pm;
+    if (budget && !estimates)
+        std::cerr << "photon: warning: --time and --target-error apply to the pm, sppm and reference modes; mode "
                   << photon::to_string(settings.mode) << " renders once, as its settings ask\n";
     // A budget without a pass count of its own decides when sppm stops.
     if (budget && settings.mode == photon::RenderMode::sppm && !bo.overrides.count("sppm_passes") &&
         !desc.settings.render.count("sppm_passes"))
         settings.sppm_passes = photon::SettingsLimits::max_sppm_passes;
-    if (!ro.error_image.empty() && settings.mode != photon::RenderMode::sppm &&
-        settings.mode != photon::RenderMode::reference)
-        throw std::runtime_error("--error-image: only the sppm and reference modes estimate their error (mode " +
+    // pm estimates its error against a short sppm run unless told not to (integrator/pm_error.hpp):
+    // at most half its own time again, for a number the user can trust or distrust.
+    if (ro.no_error_estimate)
+        settings.pm_error_passes = 0;
+    else if (!bo.overrides.count("pm_error_passes") && !desc.settings.render.count("pm_error_passes"))
+        settings.pm_error_passes = 64;
+    if (pm && settings.target_error > 0 && settings.pm_error_passes == 0)
+        throw std::runtime_error("--target-error: pm measures its error only with its estimate (not with --no-error-estimate "
+                                 "or pm_error_passes 0)");
+    if (!ro.error_image.empty() && !estimates)
+        throw std::runtime_error("--error-image: only the pm, sppm and reference modes estimate their error (mode " +
                                  std::string(photon::to_string(settings.mode)) + ")");
+    if (!ro.error_image.empty() && pm && settings.pm_error_passes == 0)
+        throw std::runtime_error("--error-image: pm estimates its error only without --no-error-estimate");
     if (!ro.error_image.empty()) photon::image_module::check_writable_image_path(ro.error_image);
     if (!so.quiet) {
         std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
@@ -163,6 +175,34 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
                              error);
         };
     }
+    photon::ImageWriteOptions wo;
+    wo.exposure = ro.exposure;
+    wo.metadata = {
+        {"photon:partial", "false"},
+        {"photon:scene", so.scene},
+        {"photon:mode", photon::to_string(settings.mode)},
+        {"photon:settings", settings_line(settings)},
+        {"photon:version", std::to_string(photon::version_major) + "." + std::to_string(photon::version_minor) + "." +
+                               std::to_string(photon::version_patch)}};
+    if (pm && (budget || settings.pm_error_passes > 0)) {
+        // One line per render (several under a budget), with its estimated error; under a budget
+        // each finished render is written at once, so the image on disk is the best so far.
+        settings.on_pass = [&, quiet = so.quiet](const photon::PassReport& r) {
+            if (!quiet) {
+                progress.finish();
+                char error[96] = "";
+                if (r.error.available)
+                    std::snprintf(error, sizeof error, ", estimated error %s%.3g%% (worst block %.3g%%)",
+                                  r.error.at_floor ? "below " : "", 100 * r.error.relative_rmse, 100 * r.error.worst_block);
+                std::fprintf(stderr, "photon: pm render %u (%.1f s)%s\n", r.pass, r.seconds, error);
+            }
+            if (budget && writer && r.image) {  // rank 0 alone writes
+                photon::Film film = *r.image;
+                photon::decode_working_gamma(film, built.working_gamma);
+                photon::image_module::write_image(output, film, wo);
+            }
+        };
+    }
     if (share) {
         // Ranks must agree on every phase they run: no cancelling one of them (mpirun stops all).
         settings.share = share;
@@ -183,15 +223,7 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     const bool partial = result.stats.partial || cancel_requested.load();
     if (partial) progress.finish();
 
-    photon::ImageWriteOptions wo;
-    wo.exposure = ro.exposure;
-    wo.metadata = {
-        {"photon:partial", partial ? "true" : "false"},
-        {"photon:scene", so.scene},
-        {"photon:mode", photon::to_string(settings.mode)},
-        {"photon:settings", settings_line(settings)},
-        {"photon:version", std::to_string(photon::version_major) + "." + std::to_string(photon::version_minor) + "." +
-                               std::to_string(photon::version_patch)}};
+    wo.metadata[0].second = partial ? "true" : "false";
     fs::path written = output;
     std::error_code ec;
     if (partial && fs::exists(output, ec)) {
@@ -205,7 +237,7 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
             error_written.replace_filename(error_written.stem().string() + ".partial" + error_written.extension().string());
         if (result.error_image.pixels().empty())
             std::cerr << "photon: warning: no error image: the render had no two independent halves (one pass, or one "
-                         "sample per pixel in one round)\n";
+                         "sample per pixel in one round, or pm cancelled before its judge had two passes)\n";
         else
             photon::image_module::write_image(error_written, result.error_image, wo);
     }

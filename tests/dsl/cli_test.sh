@@ -39,7 +39,7 @@ expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/reference.exr" $tiny -
 grep -q "mode reference" "$work/out" || fail "--mode reference: not a reference render"
 grep -q "photon: warning:" "$work/err" && fail "--mode reference: a warning for a scene with a sphere light only"
 
-# Budgets and the error estimate (sppm and reference).
+# Budgets and the error estimate (sppm and reference; pm below).
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --width 24 --height 18 --mode sppm \
     --photons-per-pass 500 --target-error 20% --error-image "$work/budget-error.exr"
 grep -q "stopped by  *target error" "$work/out" || fail "--target-error 20%: not stopped by the target"
@@ -52,9 +52,24 @@ grep -q "estimated error  *relative RMSE" "$work/out" || fail "--time: no estima
 expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --time soon
 expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --target-error x%
 expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/budget.exr" --target-error -1
-expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/nope.exr" $tiny --error-image "$work/nope-error.exr"
-grep -q "error-image: only the sppm and reference modes" "$work/err" || fail "--error-image in pm: no clear error"
-[ -e "$work/nope.exr" ] && fail "--error-image in pm: an image was written before the error"
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/nope.exr" $tiny --mode rt --error-image "$work/nope-error.exr"
+grep -q "error-image: only the pm, sppm and reference modes" "$work/err" || fail "--error-image in rt: no clear error"
+[ -e "$work/nope.exr" ] && fail "--error-image in rt: an image was written before the error"
+# pm: its error against a short sppm run, and a budget of doubled photons written as it goes.
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/pm.exr" $tiny --photons-per-pass 2000 \
+    --target-error 30% --error-image "$work/pm-error.exr"
+grep -q "estimated error  *relative RMSE.*against a short sppm run of [0-9]* passes" "$work/out" || fail "pm: no estimated error"
+grep -q "stopped by  *target error" "$work/out" || { fail "pm --target-error 30%: not stopped by the target"; cat "$work/out"; }
+grep -q "photon: pm render 1 (.*estimated error" "$work/err" || fail "pm: no render line with the estimate"
+[ -s "$work/pm.exr" ] && [ -s "$work/pm-error.exr" ] || fail "pm: image or error image not written"
+# A target below what a 4-pass judge of 2,000 photons resolves ends when the estimate stalls (or,
+# by chance, meets it), not after ever more doublings.
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/pm.exr" $tiny --photons-per-pass 2000 --target-error 5%
+grep -q "stopped by  *\(estimate stalled\|target error\)" "$work/out" || { fail "pm --target-error 5%: did not stop on the estimate"; cat "$work/out"; }
+expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/nope.exr" $tiny --target-error 30% --no-error-estimate
+grep -q "target-error: pm measures its error only with its estimate" "$work/err" || fail "pm --target-error without an estimate: no clear error"
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/pm.exr" $tiny --no-error-estimate
+grep -q "estimated error" "$work/out" && fail "--no-error-estimate: an estimate all the same"
 # A point light over glass: the reference cannot see its caustic and says so.
 printf 'camera { location <0,1,-2> look_at <0,0,0> }\nlight_source { <0,2,0>, rgb 1 }\nplane { y, 0 pigment { rgb 0.5 } }\nsphere { <0,0.5,0>, 0.3 pigment { rgbf 1 } finish { reflection { 0, 1 fresnel on } } interior { ior 1.5 } }\n' >"$work/point.pov"
 expect 0 "$photon" render "$work/point.pov" -o "$work/point.exr" $tiny --mode reference --no-mis

@@ -37,6 +37,12 @@ struct ErrorEstimate {
     unsigned worst_block_column = 0, worst_block_row = 0;  ///< its place in the grid, from the top left
     unsigned blocks_counted = 0;
     unsigned grid = 8;  ///< the grid is grid x grid blocks (fewer when the image is smaller)
+    /// Against a judge (estimate_error_against): its sppm passes (0: the estimate is of the
+    /// image's own halves), its own noise's normalised MSE, subtracted, and whether the error
+    /// left was smaller than the floor (judge_noise / 100) it was clamped to.
+    unsigned judge_passes = 0;
+    double judge_noise = 0;
+    bool at_floor = false;
 };
 
 /// The half-images' mean, the rendered image: weighted by the samples (passes) each holds.
@@ -101,6 +107,77 @@ struct ErrorEstimate {
     return e;
 }
 
+/// The error of `image`, noise and bias alike, against a consistent judge that is the mean of
+/// two independent halves A and B (a short sppm run, integrator/pm_error.hpp): with J = (A + B) / 2
+/// and truth T, E|image - J|^2 = |image - T|^2 + E|J - T|^2, and ((A - B) / 2)^2 estimates the last
+/// term, so their difference estimates the image's squared error. Summed over the image and over
+/// each block's mean as estimate_error does; a sum left below 1% of the judge's noise (the
+/// subtraction cannot resolve less) is clamped there and marked. `*error_film`, if given: per
+/// pixel and channel sqrt(max(0, (image - J)^2 - ((A - B) / 2)^2)), noisy where the judge is.
+[[nodiscard]] inline ErrorEstimate estimate_error_against(const Film& image, const Film& a, const Film& b,
+                                                          unsigned judge_passes, unsigned grid = 8,
+                                                          Film* error_film = nullptr) {
+    if (a.width() != b.width() || a.height() != b.height() || image.width() != a.width() || image.height() != a.height())
+        throw std::invalid_argument("estimate_error_against: the images differ in size");
+    ErrorEstimate e;
+    e.available = true;
+    e.judge_passes = judge_passes;
+    if (error_film) *error_film = Film(a.width(), a.height());
+    double squared_difference = 0, squared_noise = 0, squared_judge = 0;
+    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
+        const Rgb<double> pa(a.pixels()[i]), pb(b.pixels()[i]), p(image.pixels()[i]);
+        const Rgb<double> judge = (pa + pb) * 0.5, noise = (pa - pb) * 0.5, difference = p - judge;
+        const double n2 = glm::dot(noise, noise);
+        squared_difference += glm::dot(difference, difference);
+        squared_noise += n2;
+        squared_judge += glm::dot(judge, judge) - n2;
+        if (error_film) {
+            const Rgb<double> left = glm::max(difference * difference - noise * noise, Rgb<double>(0.0));
+            error_film->pixels()[i] = Rgb<float>(glm::sqrt(left));
+        }
+    }
+    if (squared_judge > 0) {
+        e.judge_noise = squared_noise / squared_judge;
+        const double floor = e.judge_noise / 100;
+        e.normalised_mse = (squared_difference - squared_noise) / squared_judge;
+        if (e.normalised_mse < floor) e.normalised_mse = floor, e.at_floor = true;
+        e.relative_rmse = std::sqrt(e.normalised_mse);
+    }
+
+    e.grid = std::min({grid, a.width(), a.height()});
+    if (e.grid == 0) return e;
+    const std::size_t blocks = std::size_t(e.grid) * e.grid;
+    std::vector<double> sum_image(blocks, 0.0), sum_a(blocks, 0.0), sum_b(blocks, 0.0);
+    for (unsigned y = 0; y < a.height(); ++y) {
+        const unsigned row = y * e.grid / a.height();
+        for (unsigned x = 0; x < a.width(); ++x) {
+            const std::size_t block = std::size_t(row) * e.grid + x * e.grid / a.width();
+            auto sum = [](const Rgb<float>& p) { return double(p.x) + p.y + p.z; };
+            sum_image[block] += sum(image.at(x, y));
+            sum_a[block] += sum(a.at(x, y));
+            sum_b[block] += sum(b.at(x, y));
+        }
+    }
+    double total = 0;
+    for (std::size_t k = 0; k < blocks; ++k) total += sum_a[k] + sum_b[k];
+    double squared = 0;
+    for (std::size_t k = 0; k < blocks; ++k) {
+        const double light = sum_a[k] + sum_b[k];
+        if (!(total > 0) || !(light > 0.01 * total)) continue;
+        const double difference = (2 * sum_image[k] - light) / light, noise = (sum_a[k] - sum_b[k]) / light;
+        const double relative = std::sqrt(std::max(0.0, difference * difference - noise * noise));
+        squared += relative * relative;
+        ++e.blocks_counted;
+        if (relative >= e.worst_block) {
+            e.worst_block = relative;
+            e.worst_block_column = unsigned(k % e.grid);
+            e.worst_block_row = unsigned(k / e.grid);
+        }
+    }
+    if (e.blocks_counted > 0) e.block_rms = std::sqrt(squared / double(e.blocks_counted));
+    return e;
+}
+
 /// Each pixel's estimated error |A - B| / 2 per channel: where the noise is.
 [[nodiscard]] inline Film error_image(const Film& a, const Film& b) {
     if (a.width() != b.width() || a.height() != b.height())
@@ -116,10 +193,16 @@ struct ErrorEstimate {
 [[nodiscard]] inline std::string format_error_estimate(const ErrorEstimate& e) {
     if (!e.available) return "not estimated (no two independent half-images: one pass, or one sample per pixel)";
     char line[200];
-    std::snprintf(line, sizeof line, "relative RMSE %.3g%% (normalised MSE %.3g); %ux%u blocks: rms %.3g%%, worst %.3g%% at %u,%u",
-                  100 * e.relative_rmse, e.normalised_mse, e.grid, e.grid, 100 * e.block_rms, 100 * e.worst_block,
-                  e.worst_block_column, e.worst_block_row);
-    return line;
+    std::snprintf(line, sizeof line, "relative RMSE %s%.3g%% (normalised MSE %.3g); %ux%u blocks: rms %.3g%%, worst %.3g%% at %u,%u",
+                  e.at_floor ? "below " : "", 100 * e.relative_rmse, e.normalised_mse, e.grid, e.grid, 100 * e.block_rms,
+                  100 * e.worst_block, e.worst_block_column, e.worst_block_row);
+    std::string text = line;
+    if (e.judge_passes > 0) {
+        std::snprintf(line, sizeof line, "; against a short sppm run of %u passes, whose own noise, normalised MSE %.3g, is subtracted",
+                      e.judge_passes, e.judge_noise);
+        text += line;
+    }
+    return text;
 }
 
 }  // namespace photon

@@ -14,6 +14,7 @@
 #include "irradiance_cache_pass.hpp"
 #include "memory_budget.hpp"
 #include "path_tracer.hpp"
+#include "pm_error.hpp"
 #include "radiance.hpp"
 #include "reference_render.hpp"
 #include "sppm.hpp"
@@ -24,7 +25,8 @@ struct RenderResult {
     Film film;
     RenderStats stats;
     /// sppm and reference: each pixel's estimated error |A - B| / 2 from the two half-images
-    /// (film/error_estimate.hpp); empty when the render had no two halves or another mode.
+    /// (film/error_estimate.hpp); pm: its error against a short sppm run (pm_error.hpp); empty
+    /// when the render had no two halves, no estimate, or another mode.
     Film error_image;
 };
 
@@ -245,11 +247,6 @@ template <class SceneT>
 [[nodiscard]] RenderResult render(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                   const RenderSettings& settings) {
     validate(settings);
-    const EffectsPlan plan = plan_effects(scene, camera, settings);
-    // The maps the plan builds, not those the settings ask for: a pass it drops allocates nothing.
-    const PhotonPasses passes = plan.planned ? PhotonPasses{plan.global_photons, plan.caustic_photons, plan.precomputed_irradiance}
-                                             : requested_passes(settings);
-    check_memory(estimate_memory(settings, max_albedo(scene), passes), double(settings.memory_limit));
     const auto start = std::chrono::steady_clock::now();
     RenderResult result;
     RenderStats& stats = result.stats;
@@ -263,6 +260,8 @@ template <class SceneT>
     };
     if (settings.mode == RenderMode::reference)
         if (std::string blind = reference_blind_spot(scene); !blind.empty()) stats.warnings.push_back({std::move(blind)});
+    if (settings.mode == RenderMode::sppm || settings.mode == RenderMode::reference)
+        check_memory(estimate_memory(settings, max_albedo(scene), requested_passes(settings)), double(settings.memory_limit));
     if (settings.mode == RenderMode::sppm) {  // passes of its own (integrator/sppm.hpp)
         result.film = render_sppm(scene, camera, settings, stats, {}, &result.error_image);
         count_every_rank();
@@ -275,20 +274,31 @@ template <class SceneT>
         stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     }
-    stats.plan = {plan.photons_not_shot, plan.photons_moved, plan.passes_skipped};
-    // Pass 2 obeys the plan too: without final gathering, pm reads the global map (absent or
-    // empty when the plan dropped indirect light) instead of gathering from it.
-    RenderSettings obeyed = settings;
-    if (plan.planned && !plan.final_gather) obeyed.final_gather_rays = 0;
-    PhotonMaps maps = build_photon_maps(scene, plan, settings, stats);
-    if (settings.cancel && settings.cancel->load()) {
-        result.film = Film(settings.width, settings.height);  // nothing rendered yet
-        stats.partial = true;
-    } else {
-        if (plan.irradiance_cache) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, obeyed, stats);
+    // The photon map modes: photon maps, then the image, under the plan for these settings.
+    auto render_once = [&](const RenderSettings& s, RenderStats& st) {
+        const EffectsPlan plan = plan_effects(scene, camera, s);
+        // The maps the plan builds, not those the settings ask for: a pass it drops allocates nothing.
+        const PhotonPasses passes = plan.planned ? PhotonPasses{plan.global_photons, plan.caustic_photons, plan.precomputed_irradiance}
+                                                 : requested_passes(s);
+        check_memory(estimate_memory(s, max_albedo(scene), passes), double(s.memory_limit));
+        st.plan = {plan.photons_not_shot, plan.photons_moved, plan.passes_skipped};
+        // Pass 2 obeys the plan too: without final gathering, pm reads the global map (absent or
+        // empty when the plan dropped indirect light) instead of gathering from it.
+        RenderSettings obeyed = s;
+        if (plan.planned && !plan.final_gather) obeyed.final_gather_rays = 0;
+        PhotonMaps maps = build_photon_maps(scene, plan, s, st);
+        if (s.cancel && s.cancel->load()) {
+            st.partial = true;
+            return Film(s.width, s.height);  // nothing rendered yet
+        }
+        if (plan.irradiance_cache) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, obeyed, st);
         // A light the plan silenced sends nothing the camera sees: no shadow rays to it either.
-        result.film = render_image(scene, camera, maps, obeyed, stats, plan.planned ? plan.light_emits() : std::vector<bool>{});
-    }
+        return render_image(scene, camera, maps, obeyed, st, plan.planned ? plan.light_emits() : std::vector<bool>{});
+    };
+    if (settings.mode == RenderMode::pm)  // with its error estimate and budgets (pm_error.hpp)
+        result.film = render_pm_estimated(scene, camera, settings, stats, &result.error_image, render_once);
+    else
+        result.film = render_once(settings, stats);
     count_every_rank();
     stats.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

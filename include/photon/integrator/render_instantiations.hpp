@@ -25,7 +25,7 @@
         const DefaultScene<S>&, const Camera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
     EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,               \
                                                       const RenderSettings&, RenderStats&, const SppmPassCallback&,  \
-                                                      Film*);                                                        \
+                                                      Film*, std::array<Film, 2>*);                                  \
     EXTERN template Film render_reference<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,          \
                                                            const RenderSettings&, RenderStats&, Film*);
 

@@ -57,6 +57,7 @@ struct PassReport {
     unsigned most = 0;        ///< the most there will be (the settings' or the budget's cap)
     double seconds = 0;       ///< since the render started
     ErrorEstimate error;      ///< of the image so far (not available after the first)
+    const Film* image = nullptr;  ///< pm: the image so far, to write as the render goes
 };
 
 /// Everything a render needs besides the scene and the camera. Defaults give a clean 800x600
@@ -104,8 +105,17 @@ struct RenderSettings {
     /// estimated relative RMSE (film/error_estimate.hpp) is at most `target_error`, whichever comes
     /// first; 0 leaves that limit out. sppm still does at most `sppm_passes` passes; reference
     /// renders one round without a budget and as many as the budget takes with one.
+    /// pm too: it renders again with twice the photons and gather rays until the budget is met
+    /// (integrator/pm_error.hpp); its target error needs `pm_error_passes` > 0.
     double time_limit = 0;
     double target_error = 0;
+    /// pm: its error is estimated against a short sppm run of at most this many passes (each of
+    /// `sppm_photons_per_pass` photons), taking at most `pm_error_time` times pm's own render
+    /// time after its first 4 passes, fewer once its noise is at most half the error it measures
+    /// (integrator/pm_error.hpp). 0: no estimate (the library's default: it costs time; the
+    /// command line turns it on).
+    unsigned pm_error_passes = 0;
+    double pm_error_time = 0.5;
 
     /// Effects forced on or off against the light-path plan (effects_plan.hpp); all automatic:
     /// the plan decides.
@@ -168,6 +178,9 @@ inline void validate(const RenderSettings& s) {
              ", found " + std::to_string(s.sppm_photons_per_pass));
     if (!(s.time_limit >= 0) || !std::isfinite(s.time_limit)) fail("time limit must be finite and >= 0 (0: none)");
     if (!(s.target_error >= 0) || !std::isfinite(s.target_error)) fail("target error must be finite and >= 0 (0: none)");
+    if (s.pm_error_passes > SettingsLimits::max_sppm_passes)
+        fail("pm error passes must be at most " + std::to_string(SettingsLimits::max_sppm_passes));
+    if (!(s.pm_error_time >= 0) || !std::isfinite(s.pm_error_time)) fail("pm error time must be finite and >= 0");
     if (!(s.sppm_initial_radius >= 0.0f) || !std::isfinite(s.sppm_initial_radius))
         fail("sppm initial radius must be finite and >= 0 (0: automatic)");
 }

@@ -81,9 +81,16 @@ struct RenderStats {
     /// it serves less well), one sentence each; the CLI prints them as "photon: warning: ...".
     std::vector<RenderWarning> warnings;
     PlanSavings plan;
-    /// sppm and reference: the image's estimated error, from two independent half-images.
+    /// sppm and reference: the image's estimated error, from two independent half-images; pm:
+    /// against a short sppm run (integrator/pm_error.hpp), whose passes are in `sppm`.
     ErrorEstimate error;
-    /// Why a progressive render stopped: "passes done", "time limit", "target error", "cancelled".
+    /// pm: renders done (more than one under a budget) and the last one's global photons and
+    /// final gather rays.
+    unsigned pm_steps = 0;
+    std::uint64_t pm_global_photons = 0;
+    unsigned pm_gather_rays = 0;
+    /// Why a progressive render (or pm under a budget) stopped: "passes done", "time limit", "target
+    /// error", "cancelled"; pm also "photon limit", "memory limit", "estimate stalled ...".
     std::string stopped_by;
 };
 
@@ -119,8 +126,11 @@ struct RenderStats {
         };
         row("estimate radius", "global %s, caustic %s", radius(s.global).c_str(), radius(s.caustic).c_str());
     }
+    if (s.pm_steps > 1)
+        row("pm budget", "%u renders, the last with %llu global photons and %u gather rays", s.pm_steps,
+            (unsigned long long)s.pm_global_photons, s.pm_gather_rays);
     if (s.sppm.passes > 0)
-        row("sppm", "%u passes, %llu photons emitted, %llu hits, mean radius %.4g, photons %.2f s, camera %.2f s",
+        row(s.mode == "pm" ? "sppm (the error's judge)" : "sppm", "%u passes, %llu photons emitted, %llu hits, mean radius %.4g, photons %.2f s, camera %.2f s",
             s.sppm.passes, (unsigned long long)s.sppm.emitted, (unsigned long long)s.sppm.photon_hits,
             s.sppm.mean_radius, s.sppm.photon_seconds, s.sppm.gather_seconds);
     row("photon rays", "%llu", (unsigned long long)(s.global.rays + s.caustic.rays + s.sppm.photon_rays));
@@ -140,8 +150,10 @@ struct RenderStats {
             (unsigned long long)s.plan.photons_not_shot, (unsigned long long)s.plan.photons_moved,
             skipped.empty() ? "nothing" : skipped.c_str());
     }
-    if (s.error.available || s.mode == "sppm" || s.mode == "reference")
-        row("estimated error", "%s", format_error_estimate(s.error).c_str());
+    if (s.error.available || s.mode == "sppm" || s.mode == "reference") {  // pm: when estimated
+        std::snprintf(line, sizeof line, "  %-28s", "estimated error");
+        out += line + format_error_estimate(s.error) + '\n';  // longer than a row's buffer
+    }
     if (!s.stopped_by.empty()) row("stopped by", "%s", s.stopped_by.c_str());
     row("time", "precompute %.2f s, cache %.2f s, render %.2f s, total %.2f s", s.precompute_seconds,
         s.cache_seconds, s.render_seconds, s.total_seconds);

@@ -273,11 +273,13 @@ struct SppmImage {
 /// (settings.time_limit, settings.target_error) is met first, reporting RenderPhase::sppm_pass and
 /// settings.on_pass after each; `on_pass`, if given, sees the image after every pass. Cancelling
 /// stops after the current pass (stats.partial). Fills stats.sppm, stats.error, stats.stopped_by,
-/// stats.rays and the times, and `*error_film` (if given) with the per-pixel error estimate.
+/// stats.rays and the times, `*error_film` (if given) with the per-pixel error estimate, and
+/// `*halves` (if given) with the two half-images (even and odd passes; pm's error estimate
+/// compares its image with them, integrator/pm_error.hpp).
 template <class SceneT>
 [[nodiscard]] Film render_sppm(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                const RenderSettings& settings, RenderStats& stats, const SppmPassCallback& on_pass = {},
-                               Film* error_film = nullptr) {
+                               Film* error_film = nullptr, std::array<Film, 2>* halves_out = nullptr) {
     using S = typename SceneT::scalar_type;
     validate(settings);
     const auto start = std::chrono::steady_clock::now();
@@ -293,7 +295,8 @@ template <class SceneT>
     unsigned pass = 0;
     double last_pass_seconds = 0;
     while (pass < settings.sppm_passes) {
-        if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) {
+        // Rank 0's cancel flag decides for every rank, as its clock does below.
+        if (agree(settings.share, settings.cancel && settings.cancel->load(std::memory_order_relaxed), "sppm cancel")) {
             stats.partial = true;
             stats.stopped_by = "cancelled";
             break;
@@ -383,6 +386,8 @@ template <class SceneT>
     detail::SppmImage image = detail::sppm_image(halves, width, height, pass, error_film != nullptr);
     stats.error = image.error;
     if (error_film) *error_film = std::move(image.error_film);
+    if (halves_out)
+        *halves_out = {detail::sppm_film(halves[0], width, height, (pass + 1) / 2), detail::sppm_film(halves[1], width, height, pass / 2)};
     stats.render_seconds = seconds_since(start);
     return std::move(image.film);
 }

@@ -247,13 +247,19 @@ inline constexpr RenderSetting render_settings_table[] = {
      .help = "sppm: photons emitted per pass", .field = member<&RenderSettings::sppm_photons_per_pass>},
     {.key = "time_limit", .keyword = "time_limit", .flag = "--time", .kind = SettingKind::real, .noun = "time limit",
      .help = "sppm and reference: stop after the pass (sppm) or round of samples per pixel (reference) at which "
-             "this many seconds have passed (the command line also takes 90s, 2m, 1h; 0: no limit)",
+             "this many seconds have passed; pm: render again with twice the photons and gather rays while the "
+             "next render fits (the command line also takes 90s, 2m, 1h; 0: no limit)",
      .units = "seconds", .field = member<&RenderSettings::time_limit>},
     {.key = "target_error", .keyword = "target_error", .flag = "--target-error", .kind = SettingKind::real,
      .noun = "target error",
-     .help = "sppm and reference: stop once the estimated relative RMSE of the image is at most this (0.01, "
-             "or 1% on the command line; 0: no target)",
+     .help = "sppm, reference and pm: stop once the estimated relative RMSE of the image is at most this "
+             "(0.01, or 1% on the command line; 0: no target)",
      .units = "fraction", .field = member<&RenderSettings::target_error>},
+    {.key = "pm_error_passes", .keyword = "pm_error_passes", .flag = "--error-passes",
+     .hi = SettingsLimits::max_sppm_passes, .noun = "pm error passes",
+     .help = "pm: estimate the error against a short sppm run of at most this many passes, taking at most half "
+             "pm's own time (0: no estimate; photon render uses 64 unless told, --no-error-estimate)",
+     .field = member<&RenderSettings::pm_error_passes>},
     {.key = "effects", .keyword = "effects", .flag = "--effects", .kind = SettingKind::text, .noun = "effects",
      .help = "Effects forced on or off against the light-path plan, e.g. caustics=off,indirect=on "
              "(caustics, indirect: on, off or auto; lights=on: photons also from lights the plan finds "
