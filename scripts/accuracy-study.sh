@@ -70,7 +70,8 @@ timed_render() {
   seconds=
   for ((run = 0; run < runs; ++run)); do
     t0=$(now)
-    "$photon" render "$scene" --width "$width" --height "$height" --threads "$threads" "$@" -o "$work/$name.exr" \
+    # --no-error-estimate: the cost of the settings alone, without pm's short sppm run (other modes ignore it)
+    "$photon" render "$scene" --width "$width" --height "$height" --threads "$threads" --no-error-estimate "$@" -o "$work/$name.exr" \
       >"$work/$name.log" 2>&1 || { tail -20 "$work/$name.log" >&2; echo "accuracy-study: $name failed" >&2; exit 1; }
     t=$(awk -v a="$t0" -v b="$(now)" 'BEGIN { printf "%.2f", b - a }')
     seconds=$(awk -v s="${seconds:-$t}" -v t="$t" 'BEGIN { printf "%.2f", t < s ? t : s }')

@@ -111,7 +111,8 @@ for scene in "${scene_list[@]}"; do
   photon_name=$scene-photon pov_name=$scene-povray-$quality
 
   echo "== $scene: photon pm, ${width}x$height"
-  timed_render "$photon_name" "$photon" render "$pov" --mode pm --width "$width" --height "$height" \
+  # --no-error-estimate: the image alone, as POV-Ray renders it (no short sppm run to judge it).
+  timed_render "$photon_name" "$photon" render "$pov" --mode pm --no-error-estimate --width "$width" --height "$height" \
     -o "$work/$photon_name.exr"
   photon_s=$seconds
   echo "== $scene: POV-Ray $(basename "$pov_header" .inc), ${width}x$height, $cores threads"
