@@ -11,8 +11,10 @@
 namespace photon {
 
 inline bool identical(const Film& a, const Film& b) {
+    // An empty film (no error image) has no pixel array: memcmp must not see its null pointer.
     return a.width() == b.width() && a.height() == b.height() &&
-           std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0;
+           (a.pixels().empty() ||
+            std::memcmp(a.pixels().data(), b.pixels().data(), a.pixels().size() * sizeof(Rgb<float>)) == 0);
 }
 
 /// Mean red, green and blue of the pixels of each of bx x by equal blocks (row-major; pixels

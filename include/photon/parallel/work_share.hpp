@@ -82,6 +82,7 @@ void share_lists(WorkShare* share, std::vector<std::vector<T>>& lists, const cha
         for (std::size_t u = r; u < lists.size(); u += share->ranks()) {
             const auto n = detail::read_one<std::uint64_t>(all[r], at);
             lists[u].resize(n);
+            if (n == 0) continue;  // an empty list's data() may be null, which memcpy must not see
             std::memcpy(lists[u].data(), all[r].data() + at, n * sizeof(T));
             at += n * sizeof(T);
         }
@@ -104,6 +105,7 @@ void share_runs(WorkShare* share, std::span<T> items, std::size_t run, const cha
         std::size_t at = 0;
         for (std::size_t u = r; u < units; u += share->ranks()) {
             const auto dst = unit(u);
+            if (dst.empty()) continue;
             std::memcpy(dst.data(), all[r].data() + at, dst.size_bytes());
             at += dst.size_bytes();
         }
