@@ -56,6 +56,31 @@ struct ErrorEstimate {
     return m;
 }
 
+namespace detail {
+/// The block figures of `e` (rms, worst, blocks counted) from the halves' light per block: blocks
+/// with more than 1% of the light count, each with the relative error `relative(k, light)`.
+template <class Relative>
+void summarise_blocks(ErrorEstimate& e, const std::vector<double>& sum_a, const std::vector<double>& sum_b,
+                      Relative&& relative) {
+    double total = 0;
+    for (std::size_t k = 0; k < sum_a.size(); ++k) total += sum_a[k] + sum_b[k];
+    double squared = 0;
+    for (std::size_t k = 0; k < sum_a.size(); ++k) {
+        const double light = sum_a[k] + sum_b[k];
+        if (!(total > 0) || !(light > 0.01 * total)) continue;
+        const double r = relative(k, light);
+        squared += r * r;
+        ++e.blocks_counted;
+        if (r >= e.worst_block) {
+            e.worst_block = r;
+            e.worst_block_column = unsigned(k % e.grid);
+            e.worst_block_row = unsigned(k / e.grid);
+        }
+    }
+    if (e.blocks_counted > 0) e.block_rms = std::sqrt(squared / double(e.blocks_counted));
+}
+}  // namespace detail
+
 /// The error estimate of (A + B) / 2 from its halves A and B.
 [[nodiscard]] inline ErrorEstimate estimate_error(const Film& a, const Film& b, unsigned grid = 8) {
     if (a.width() != b.width() || a.height() != b.height())
@@ -88,22 +113,9 @@ struct ErrorEstimate {
             sum_b[block] += double(pb.x) + pb.y + pb.z;
         }
     }
-    double total = 0;
-    for (std::size_t k = 0; k < sum_a.size(); ++k) total += sum_a[k] + sum_b[k];
-    double squared = 0;
-    for (std::size_t k = 0; k < sum_a.size(); ++k) {
-        const double light = sum_a[k] + sum_b[k];
-        if (!(total > 0) || !(light > 0.01 * total)) continue;
-        const double relative = std::abs(sum_a[k] - sum_b[k]) / light;
-        squared += relative * relative;
-        ++e.blocks_counted;
-        if (relative >= e.worst_block) {
-            e.worst_block = relative;
-            e.worst_block_column = unsigned(k % e.grid);
-            e.worst_block_row = unsigned(k / e.grid);
-        }
-    }
-    if (e.blocks_counted > 0) e.block_rms = std::sqrt(squared / double(e.blocks_counted));
+    detail::summarise_blocks(e, sum_a, sum_b, [&](std::size_t k, double light) {
+        return std::abs(sum_a[k] - sum_b[k]) / light;
+    });
     return e;
 }
 
@@ -158,23 +170,10 @@ struct ErrorEstimate {
             sum_b[block] += sum(b.at(x, y));
         }
     }
-    double total = 0;
-    for (std::size_t k = 0; k < blocks; ++k) total += sum_a[k] + sum_b[k];
-    double squared = 0;
-    for (std::size_t k = 0; k < blocks; ++k) {
-        const double light = sum_a[k] + sum_b[k];
-        if (!(total > 0) || !(light > 0.01 * total)) continue;
+    detail::summarise_blocks(e, sum_a, sum_b, [&](std::size_t k, double light) {
         const double difference = (2 * sum_image[k] - light) / light, noise = (sum_a[k] - sum_b[k]) / light;
-        const double relative = std::sqrt(std::max(0.0, difference * difference - noise * noise));
-        squared += relative * relative;
-        ++e.blocks_counted;
-        if (relative >= e.worst_block) {
-            e.worst_block = relative;
-            e.worst_block_column = unsigned(k % e.grid);
-            e.worst_block_row = unsigned(k / e.grid);
-        }
-    }
-    if (e.blocks_counted > 0) e.block_rms = std::sqrt(squared / double(e.blocks_counted));
+        return std::sqrt(std::max(0.0, difference * difference - noise * noise));
+    });
     return e;
 }
 
