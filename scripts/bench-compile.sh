@@ -4,7 +4,9 @@
 # and peak memory of one translation unit each, compiled with the project's own flags (taken from
 # compile_commands.json of a Release build in $PHOTON_COMPILE_BUILD_DIR, default build-compile/):
 #   - the umbrella header alone (#include <photon/photon.hpp>, nothing used),
-#   - examples/cornell.cpp (one render() call on a hand-built scene),
+#   - examples/cornell.cpp (one render() call on a hand-built scene), twice: header-only (target
+#     cornell_header_only) and linking the optional compiled unit photon::compiled (target cornell),
+#     which makes the render functions of DefaultScene<float> `extern template`,
 #   - the CLI: each of its units (dsl/cli/*.cpp, which compile in parallel) and their sum,
 #   - the compiled units of the render instantiations and the scene language (src/*.cpp,
 #     dsl/src/*.cpp),
@@ -32,15 +34,17 @@ tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 printf '#include <photon/photon.hpp>\nint main() { return 0; }\n' >"$tmp/umbrella.cpp"
 
-# command_for SOURCE [AS]: the compile command of SOURCE from compile_commands.json, compiling AS
-# instead when given (the umbrella header borrows the flags of examples/cornell.cpp), to $tmp/out.o.
+# command_for SOURCE [AS] [TARGET_DIR]: the compile command of SOURCE from compile_commands.json (of
+# the target whose objects go to TARGET_DIR when given), compiling AS instead when given (the
+# umbrella header borrows the flags of examples/cornell.cpp), to $tmp/out.o.
 # A source compiled inside a unity file takes the flags of the unity file of its own directory.
 command_for() {
-  /usr/bin/env python3 - "$build/compile_commands.json" "$1" "${2:-$1}" "$tmp/out.o" "$root" "$build" <<'EOF'
+  /usr/bin/env python3 - "$build/compile_commands.json" "$1" "${2:-$1}" "$tmp/out.o" "$root" "$build" "${3:-}" <<'EOF'
 import json, os, shlex, sys
-db, source, compiled, out, root, build = sys.argv[1:]
+db, source, compiled, out, root, build, target = sys.argv[1:]
 entries = json.load(open(db))
-matches = [e for e in entries if e["file"] == source]
+matches = [e for e in entries if e["file"] == source and
+           (not target or "/" + target + "/" in e.get("output", e["command"]))]
 if not matches:  # <build>/tests/dsl/CMakeFiles/test_dsl.dir/Unity/unity_0_cxx.cxx for <root>/tests/dsl/x.cpp
     folder = os.path.relpath(os.path.dirname(source), root)
     matches = [e for e in entries if "/Unity/" in e["file"] and
@@ -69,12 +73,13 @@ for e in json.load(open(db)):
 EOF
 }
 
-# measure LABEL SOURCE [AS]: one table row, the fastest of $repeat runs; sets cpu_s and peak_mb.
+# measure LABEL SOURCE [AS] [TARGET_DIR]: one table row, the fastest of $repeat runs; sets cpu_s
+# and peak_mb.
 measure() {
-  local label=$1 source=$2 as=${3:-$2} lines=() dir cmd best="" mem=""
+  local label=$1 source=$2 as=${3:-$2} target=${4:-} lines=() dir cmd best="" mem=""
   cpu_s=0 peak_mb=0
   [ -f "$source" ] || return 0
-  mapfile -t lines < <(command_for "$source" "$as")
+  mapfile -t lines < <(command_for "$source" "$as" "$target")
   if [ ${#lines[@]} -ne 2 ]; then echo "bench-compile: no compile command for $source" >&2; exit 1; fi
   dir=${lines[0]} cmd=${lines[1]}
   for _ in $(seq "$repeat"); do
@@ -97,8 +102,9 @@ echo "cpu: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) logical cores; load
 echo
 echo "| translation unit | CPU s | peak MB |"
 echo "|---|---:|---:|"
-measure "umbrella header alone" "$root/examples/cornell.cpp" "$tmp/umbrella.cpp"
-measure "examples/cornell.cpp" "$root/examples/cornell.cpp"
+measure "umbrella header alone" "$root/examples/cornell.cpp" "$tmp/umbrella.cpp" cornell_header_only.dir
+measure "examples/cornell.cpp, header-only" "$root/examples/cornell.cpp" "" cornell_header_only.dir
+measure "examples/cornell.cpp, with photon::compiled" "$root/examples/cornell.cpp" "" cornell.dir
 mapfile -t cli_units < <(sources_of photon_cli.dir)
 cli_total=0 cli_peak=0
 for unit in "${cli_units[@]}"; do
