@@ -17,7 +17,7 @@
 #
 # Usage: scripts/povray-accuracy-study.sh [--size WxH] [--scenes a,b,...] [--judge-spp N]
 #            [--judge-passes N] [--sweep pm,sppm,reference,povray] [--budgets small|full]
-#            [--threads N] [--build DIR] [--doc FILE]
+#            [--threads N] [--build DIR] [--doc FILE] [--reuse-judges yes]
 #   --size          image size of every scene (default 128x128); SCENE=WxH entries in --scenes
 #                   override it for one scene, e.g. --scenes cornell,white_box=512x512
 #   --scenes        default cornell,room1,white_box,two_balls (examples/scenes/<name>.pov)
@@ -29,6 +29,8 @@
 #   --sweep         which curves (default all four); the others keep their rows from an earlier run
 #   --budgets       small: fewer pm settings and budgets (a quick look); full (default)
 #   --threads       threads of every render, photon's and POV-Ray's (default 2)
+#   --reuse-judges  yes: take a cached judge made by any earlier build (the binary leaves the key);
+#                   for a change that cannot move the judge's mode (sppm, reference)
 # The judges are cached under DIR/povray-accuracy/judges, keyed by scene file, size, judge settings
 # and the photon binary (its SHA-256); renders and logs stay in DIR/povray-accuracy (DIR default
 # build, reused when configured).
@@ -46,6 +48,7 @@ budgets=full
 threads=2
 build=build
 doc=docs/accuracy-vs-povray.md
+reuse_judges=no
 usage() { sed -n '/^# Usage:/,/^# The judges/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 while [ $# -gt 0 ]; do
   [ $# -ge 2 ] || usage
@@ -59,6 +62,7 @@ while [ $# -gt 0 ]; do
     --threads) threads=$2 ;;
     --build) build=$2 ;;
     --doc) doc=$2 ;;
+    --reuse-judges) reuse_judges=$2 ;;
     *) usage ;;
   esac
   shift 2
@@ -84,6 +88,7 @@ compare=$root/$build/photon-compare
 work=$root/$build/povray-accuracy
 mkdir -p "$work/judges" docs/accuracy-vs-povray docs/images/accuracy
 photon_key=$(sha256sum "$photon" | cut -c1-16)
+[ "$reuse_judges" = yes ] && photon_key=any
 pov_version=$(povray --version 2>&1 | sed -n 's/^POV-Ray \([0-9.]*[0-9]\).*/\1/p' | head -1)
 
 # Runs the command after NAME, output and log in $work/NAME.log, and sets `cpu` to its CPU time
@@ -153,7 +158,7 @@ pm_runs() {
     "default spp16|--spp 16" \
     "fg256 ic0.1 spp36|--irradiance-cache 0.1 --spp 36"
 }
-sppm_runs() { if [ "$budgets" = small ]; then echo "4 16"; else echo "4 16 64 256"; fi; }
+sppm_runs() { if [ "$budgets" = small ]; then echo "4 16"; else echo "4 16 64 256 1024 2048"; fi; }
 reference_runs() { if [ "$budgets" = small ]; then echo "16 64"; else echo "16 64 256 1024"; fi; }
 pov_runs() { if [ "$budgets" = small ]; then echo "normal:10 hq:10"; else echo "normal:4 normal:10 hq:4 hq:10"; fi; }
 

@@ -10,8 +10,11 @@
 # max_trace_level 10 is rendered the same way, as in scripts/povray-accuracy-study.sh.
 #
 # Usage: scripts/white-box-target.sh [--judge FILE.exr] [--judge-spp N] [--runs N] [--build DIR]
+#            [--long yes]
 #   --judge   the judge image (default DIR/white-box-target/judge.exr), rendered if missing; its log
 #             FILE.log must sit beside it
+#   --long    yes: also the settings that spend about 100 CPU-s (one seed each): pm with 1M
+#             photons and 1024 gather rays, pm at 16 samples per pixel, POV-Ray's IndoorHQ
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -19,6 +22,7 @@ build=build
 judge=""
 judge_spp=8192
 runs=3
+long=no
 usage() { sed -n '/^# Usage:/,/^$/p' "$0" | sed 's/^# \{0,1\}//' >&2; exit 2; }
 while [ $# -gt 0 ]; do
   [ $# -ge 2 ] || usage
@@ -27,6 +31,7 @@ while [ $# -gt 0 ]; do
     --judge-spp) judge_spp=$2 ;;
     --runs) runs=$2 ;;
     --build) build=$2 ;;
+    --long) long=$2 ;;
     *) usage ;;
   esac
   shift 2
@@ -76,6 +81,9 @@ pm=("$photon" render "$scene" --width 512 --height 512 --threads 2 --mode pm --n
 printf '#version 3.7;\n#include "%s"\n#include "%s"\nglobal_settings { max_trace_level 10 }\n' \
   "$root/examples/scenes/povray/rad.inc" "$scene" >"$work/normal.pov"
 povray_normal=(povray -D +W512 +H512 +A0.3 +AM2 +R3 +WT2 +FE +I"$work/normal.pov" +O"$work/out.exr")
+printf '#version 3.7;\n#include "%s"\n#include "%s"\nglobal_settings { max_trace_level 10 }\n' \
+  "$root/examples/scenes/povray/rad_hq.inc" "$scene" >"$work/hq.pov"
+povray_hq=(povray -D +W512 +H512 +A0.3 +AM2 +R3 +WT2 +FE +I"$work/hq.pov" +O"$work/out.exr")
 
 echo "judge: $judge ($(sed -n 's/.*mode reference, \([0-9]*\) samples per pixel.*/\1/p' "${judge%.exr}.log" | head -1) spp), noise floor (relative MSE) $floor"
 echo "machine: $(nproc) cores, $(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1), load $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -87,3 +95,10 @@ row "pm, irradiance cache 0.3" "${pm[@]}" --irradiance-cache 0.3
 row "pm, irradiance cache 0.4" "${pm[@]}" --irradiance-cache 0.4
 row "pm, irradiance cache 0.3, 100k photons" "${pm[@]}" --irradiance-cache 0.3 --global-photons 100000
 row "POV-Ray 3.7, Normal, trace 10" "${povray_normal[@]}"
+if [ "$long" = yes ]; then
+  runs=1
+  row "pm, 1M photons, 1024 gather rays (1 seed)" "${pm[@]}" --global-photons 1000000 --final-gather 1024
+  row "pm, 16 samples per pixel, irradiance cache 0.3 (1 seed)" "${pm[@]}" --spp 16 --irradiance-cache 0.3
+  row "pm, 36 samples per pixel, 512 gather rays, 1M photons (1 seed)" "${pm[@]}" --spp 36 --final-gather 512 --global-photons 1000000
+  row "POV-Ray 3.7, IndoorHQ, trace 10" "${povray_hq[@]}"
+fi
