@@ -149,6 +149,7 @@ pm_runs() {
     "fg64 50k ic0.4|--final-gather 64 --global-photons 50000 --irradiance-cache 0.4" \
     "fg64 200k|--final-gather 64" \
     "fg128 100k|--final-gather 128 --global-photons 100000" \
+    "fg64 100k spp36|--final-gather 64 --global-photons 100000 --spp 36" \
     "default (fg256 200k ic0.2)|" \
     "fg256 1M|--global-photons 1000000" \
     "fg256 ic0.1|--irradiance-cache 0.1" \
