@@ -102,6 +102,17 @@ private:
     std::vector<BinaryNode> build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                          BvhConfig config);
     void collapse(const std::vector<BinaryNode>& binary);
+    /// Starts loading both cache lines of a node the ray entered, so that the misses of sibling
+    /// subtrees overlap instead of queueing one after another.
+    PHOTON_FORCEINLINE void prefetch(std::uint32_t node) const noexcept {
+#if defined(__GNUC__)
+        const char* p = reinterpret_cast<const char*>(&nodes_[node]);
+        __builtin_prefetch(p);
+        __builtin_prefetch(p + 64);
+#else
+        (void)node;
+#endif
+    }
 
     static constexpr std::uint32_t forced_median_depth = 64;
     // The binary depth stays below forced_median_depth + log2(2^32) + 1; each 4-wide level
@@ -368,6 +379,7 @@ bool Bvh<S>::intersect(Ray<S>& ray, TestFn&& test) const {
                 for (; mask != 0; mask &= mask - 1) {
                     const int c = std::countr_zero(mask);
                     StackEntry e{node.first[c], node.count[c], t[c]};
+                    if (e.count == 0) prefetch(e.first);
                     int i = n++;
                     for (; i > 0 && hits[i - 1].t < e.t; --i) hits[i] = hits[i - 1];
                     hits[i] = e;
@@ -409,6 +421,7 @@ bool Bvh<S>::any_hit(const Ray<S>& ray, TestFn&& test) const {
         PHOTON_ASSERT(top + width <= stack.size());
         for (unsigned mask = slab.enter(node, ray.t_max, t); mask != 0; mask &= mask - 1) {
             const int c = std::countr_zero(mask);
+            if (node.count[c] == 0) prefetch(node.first[c]);
             stack[top++] = {node.first[c], node.count[c], t[c]};
         }
     }
