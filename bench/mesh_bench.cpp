@@ -4,7 +4,7 @@
 // throughput for coherent primary rays and incoherent random rays. Before timing, both must
 // agree on every checked ray (hit or miss, and t), or the run stops.
 //
-//   mesh_bench [--quick] [--photon_leaf=<n>] [--photon_bins=<n>] [google benchmark flags]
+//   mesh_bench [--quick] [--photon_leaf=<n>] [--photon_bins=<n>] [--photon_cost=<x>] [google benchmark flags]
 //
 // --quick uses a 100k-triangle mesh. At the end, a Markdown table of rays/s and ratios.
 
@@ -345,6 +345,7 @@ int main(int argc, char** argv) {
         if (std::strcmp(argv[i], "--quick") == 0) grid_n = 91;  // 99,372 triangles
         else if (std::strncmp(argv[i], "--photon_leaf=", 14) == 0) photon_config.max_leaf_size = unsigned(std::atoi(argv[i] + 14));
         else if (std::strncmp(argv[i], "--photon_bins=", 14) == 0) photon_config.bins = unsigned(std::atoi(argv[i] + 14));
+        else if (std::strncmp(argv[i], "--photon_cost=", 14) == 0) photon_config.intersection_cost = float(std::atof(argv[i] + 14));
         else args.push_back(argv[i]);
     }
     for (const char* impl : {"photon", "embree", "embree-high"})

@@ -75,7 +75,10 @@ template <class S> Vec3<S> random_direction(Pcg32& rng) {
 TEMPLATE_TEST_CASE("mesh nearest and any hit match brute force over all triangles", "[geometry][mesh]", float, double) {
     using S = TestType;
     const MeshData<S> m = bumpy_sphere<S>(12);  // 1,728 triangles
-    const TriangleMesh<S> mesh(m.positions, m.triangles);
+    // Leaves of one triangle, the default, and leaves of up to 8 in two blocks of four.
+    const BvhConfig config = GENERATE(BvhConfig{.max_leaf_size = 1}, BvhConfig{},
+                                      BvhConfig{.max_leaf_size = 8, .intersection_cost = 8.0f});
+    const TriangleMesh<S> mesh(m.positions, m.triangles, config);
     REQUIRE(mesh.triangle_count() == 1728);
     Pcg32 rng(7, 1);
     int hits = 0;

@@ -35,7 +35,11 @@ namespace photon {
 struct BvhConfig {
     unsigned max_leaf_size = 8;    ///< never more primitives per leaf than this, except identical centres
     unsigned bins = 16;            ///< SAH bins per axis
-    float intersection_cost = 1.0f;  ///< cost of one primitive test relative to a node visit
+    float intersection_cost = 1.0f;  ///< cost of one primitive test (one block's, see leaf_block) relative to a node visit
+    /// Leaves start at multiples of this in primitive_indices(), padded with `padding` entries, so
+    /// that a caller can store primitives in blocks tested together (TriangleMesh: 4 per SSE test).
+    /// With 1, leaves are neither padded nor reordered.
+    unsigned leaf_block = 1;
 };
 
 /// BVH built as a binary tree by binned SAH (Wald 2007, "On fast Construction of SAH-based
@@ -65,7 +69,9 @@ public:
     [[nodiscard]] bool empty() const noexcept { return nodes_.empty(); }
     /// The 4-wide nodes; nodes()[0] is the root.
     [[nodiscard]] std::span<const Node> nodes() const noexcept { return nodes_; }
-    /// Primitive ids in leaf order: leaf nodes refer to ranges of this array.
+    /// Primitive ids in leaf order: leaf nodes refer to ranges of this array (with leaf_block > 1,
+    /// each leaf's range starts at a multiple of it and the slots between leaves hold `padding`).
+    static constexpr std::uint32_t padding = ~std::uint32_t(0);
     [[nodiscard]] std::span<const std::uint32_t> primitive_indices() const noexcept { return prim_ids_; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return bounds_; }
     /// Depth of the binary tree before collapsing (the 4-wide tree is shallower).
@@ -80,6 +86,10 @@ public:
     template <class TestFn> bool intersect(Ray<S>& ray, TestFn&& test) const;
     /// Any-hit traversal: stops at the first primitive for which `test` returns true.
     template <class TestFn> bool any_hit(const Ray<S>& ray, TestFn&& test) const;
+    /// The same two traversals calling `leaf(first, count, ray)` once per reached leaf, for
+    /// callers that test a leaf's primitives together.
+    template <class LeafFn> bool intersect_leaves(Ray<S>& ray, LeafFn&& leaf) const;
+    template <class LeafFn> bool any_hit_leaves(const Ray<S>& ray, LeafFn&& leaf) const;
     /// Calls `visit(leaf_position)` for every primitive in a leaf whose box overlaps `box`.
     template <class VisitFn> void for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const;
 
@@ -101,7 +111,18 @@ private:
     };
     std::vector<BinaryNode> build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                          BvhConfig config);
-    void collapse(const std::vector<BinaryNode>& binary);
+    void collapse(const std::vector<BinaryNode>& binary, unsigned leaf_block);
+    /// Starts loading both cache lines of a node the ray entered, so that the misses of sibling
+    /// subtrees overlap instead of queueing one after another.
+    PHOTON_FORCEINLINE void prefetch(std::uint32_t node) const noexcept {
+#if defined(__GNUC__)
+        const char* p = reinterpret_cast<const char*>(&nodes_[node]);
+        __builtin_prefetch(p);
+        __builtin_prefetch(p + 64);
+#else
+        (void)node;
+#endif
+    }
 
     static constexpr std::uint32_t forced_median_depth = 64;
     // The binary depth stays below forced_median_depth + log2(2^32) + 1; each 4-wide level
@@ -185,7 +206,7 @@ template <Scalar S>
 Bvh<S>::Bvh(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config) {
     PHOTON_ASSERT(boxes.size() == centers.size());
     PHOTON_ASSERT(boxes.size() < std::numeric_limits<std::uint32_t>::max());
-    collapse(build_binary(boxes, centers, config));
+    collapse(build_binary(boxes, centers, config), std::max(1u, config.leaf_block));
 }
 
 template <Scalar S>
@@ -198,6 +219,9 @@ auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S
     if (n == 0) return nodes;
     const unsigned bin_count = std::max(2u, config.bins);
     const unsigned max_leaf = std::max(1u, config.max_leaf_size);
+    // Primitives tested together in blocks cost by the block (Embree's SAH does the same).
+    const unsigned block = std::max(1u, config.leaf_block);
+    const auto tests = [block](std::uint32_t count) { return S((count + block - 1) / block); };
     nodes.reserve(2 * n);
     nodes.push_back({});
     nodes[0].first = 0;
@@ -254,12 +278,12 @@ auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S
                 left_count += bins[b].count;
                 const std::uint32_t right_count = count - left_count;
                 if (left_count == 0 || right_count == 0) continue;
-                const S cost = acc.half_area() * S(left_count) + right_bounds[b + 1].half_area() * S(right_count);
+                const S cost = acc.half_area() * tests(left_count) + right_bounds[b + 1].half_area() * tests(right_count);
                 if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = b;
             }
         }
 
-        const S leaf_cost = box.half_area() * S(count) * S(config.intersection_cost);
+        const S leaf_cost = box.half_area() * tests(count) * S(config.intersection_cost);
         const S split_cost = box.half_area() + best_cost * S(config.intersection_cost);
         std::uint32_t mid;
         if (task.depth >= forced_median_depth && count > max_leaf) {
@@ -297,9 +321,20 @@ auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S
     return nodes;
 }
 
-template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary) {
+template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary, unsigned leaf_block) {
     nodes_.clear();
     if (binary.empty()) return;
+    // With blocks, leaves are copied in the order the collapse reaches them (depth first, as the
+    // nodes), each from a multiple of leaf_block.
+    std::vector<std::uint32_t> padded;
+    if (leaf_block > 1) padded.reserve(prim_ids_.size() + prim_ids_.size() / 2);
+    const auto place_leaf = [&](const BinaryNode& leaf) {
+        if (leaf_block == 1) return leaf.first;
+        padded.resize((padded.size() + leaf_block - 1) / leaf_block * leaf_block, padding);
+        const auto first = static_cast<std::uint32_t>(padded.size());
+        padded.insert(padded.end(), prim_ids_.begin() + leaf.first, prim_ids_.begin() + leaf.first + leaf.count);
+        return first;
+    };
     bounds_ = binary[0].bounds;
     // Each 4-wide node takes a binary node's children, then repeatedly opens its largest inner
     // child (by surface area, the one rays reach most often) until it has four.
@@ -334,7 +369,7 @@ template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary)
             for (int a = 0; a < 3; ++a) node.min[a][c] = b.min[a], node.max[a][c] = b.max[a];
             if (c >= n) continue;
             if (binary[kids[c]].is_leaf()) {
-                node.first[c] = binary[kids[c]].first;
+                node.first[c] = place_leaf(binary[kids[c]]);
                 node.count[c] = binary[kids[c]].count;
             } else {
                 node.first[c] = static_cast<std::uint32_t>(nodes_.size());
@@ -345,11 +380,35 @@ template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary)
         nodes_[to] = node;
     }
     nodes_.shrink_to_fit();
+    if (leaf_block > 1) {
+        padded.resize((padded.size() + leaf_block - 1) / leaf_block * leaf_block, padding);
+        prim_ids_ = std::move(padded);
+    }
 }
 
 template <Scalar S>
 template <class TestFn>
 bool Bvh<S>::intersect(Ray<S>& ray, TestFn&& test) const {
+    return intersect_leaves(ray, [&](std::uint32_t first, std::uint32_t count, Ray<S>& r) {
+        bool found = false;
+        for (std::uint32_t i = first; i < first + count; ++i) found |= test(i, r);
+        return found;
+    });
+}
+
+template <Scalar S>
+template <class TestFn>
+bool Bvh<S>::any_hit(const Ray<S>& ray, TestFn&& test) const {
+    return any_hit_leaves(ray, [&](std::uint32_t first, std::uint32_t count, const Ray<S>& r) {
+        for (std::uint32_t i = first; i < first + count; ++i)
+            if (test(i, r)) return true;
+        return false;
+    });
+}
+
+template <Scalar S>
+template <class LeafFn>
+bool Bvh<S>::intersect_leaves(Ray<S>& ray, LeafFn&& leaf) const {
     if (nodes_.empty()) return false;
     const detail::SlabRay<S> slab(ray);
     std::array<StackEntry, stack_size> stack;
@@ -368,6 +427,7 @@ bool Bvh<S>::intersect(Ray<S>& ray, TestFn&& test) const {
                 for (; mask != 0; mask &= mask - 1) {
                     const int c = std::countr_zero(mask);
                     StackEntry e{node.first[c], node.count[c], t[c]};
+                    if (e.count == 0) prefetch(e.first);
                     int i = n++;
                     for (; i > 0 && hits[i - 1].t < e.t; --i) hits[i] = hits[i - 1];
                     hits[i] = e;
@@ -378,7 +438,7 @@ bool Bvh<S>::intersect(Ray<S>& ray, TestFn&& test) const {
                 continue;
             }
         } else {
-            for (std::uint32_t i = current.first; i < current.first + current.count; ++i) found |= test(i, ray);
+            found |= leaf(current.first, current.count, ray);
         }
         // Pop, skipping subtrees the ray enters beyond the closest hit found since.
         for (;;) {
@@ -390,8 +450,8 @@ bool Bvh<S>::intersect(Ray<S>& ray, TestFn&& test) const {
 }
 
 template <Scalar S>
-template <class TestFn>
-bool Bvh<S>::any_hit(const Ray<S>& ray, TestFn&& test) const {
+template <class LeafFn>
+bool Bvh<S>::any_hit_leaves(const Ray<S>& ray, LeafFn&& leaf) const {
     if (nodes_.empty()) return false;
     const detail::SlabRay<S> slab(ray);
     std::array<StackEntry, stack_size> stack;
@@ -400,8 +460,7 @@ bool Bvh<S>::any_hit(const Ray<S>& ray, TestFn&& test) const {
     while (top > 0) {
         const StackEntry e = stack[--top];
         if (e.count != 0) {
-            for (std::uint32_t i = e.first; i < e.first + e.count; ++i)
-                if (test(i, ray)) return true;
+            if (leaf(e.first, e.count, ray)) return true;
             continue;
         }
         const Node& node = nodes_[e.first];
@@ -409,6 +468,7 @@ bool Bvh<S>::any_hit(const Ray<S>& ray, TestFn&& test) const {
         PHOTON_ASSERT(top + width <= stack.size());
         for (unsigned mask = slab.enter(node, ray.t_max, t); mask != 0; mask &= mask - 1) {
             const int c = std::countr_zero(mask);
+            if (node.count[c] == 0) prefetch(node.first[c]);
             stack[top++] = {node.first[c], node.count[c], t[c]};
         }
     }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -12,11 +14,13 @@
 #include "../memory/huge_page_allocator.hpp"
 #include "bvh.hpp"
 #include "triangle.hpp"
+#include "triangle4.hpp"
 
 namespace photon {
 
 /// Indexed triangle mesh with its own BVH, so that a mesh of a million triangles is one object
-/// in the scene and costs O(log n) per ray. Normals follow the winding of each triangle.
+/// in the scene and costs O(log n) per ray. Normals follow the winding of each triangle. A leaf's
+/// triangles are stored four to a block and tested four at once (detail::Triangle4).
 template <Scalar S> class TriangleMesh {
 public:
     using scalar_type = S;
@@ -25,56 +29,69 @@ public:
     /// Throws std::invalid_argument on an index out of range or a non-finite vertex.
     TriangleMesh(std::vector<Vec3<S>> positions, std::vector<Index> triangles, BvhConfig config = {});
 
-    [[nodiscard]] std::size_t triangle_count() const noexcept { return tris_.size(); }
+    [[nodiscard]] std::size_t triangle_count() const noexcept { return indices_.size(); }
     [[nodiscard]] std::span<const Vec3<S>> positions() const noexcept { return positions_; }
     [[nodiscard]] std::span<const Index> triangles() const noexcept { return indices_; }
     [[nodiscard]] const Bvh<S>& bvh() const noexcept { return bvh_; }
     [[nodiscard]] BBox<S> bounds() const noexcept { return bvh_.bounds(); }
     [[nodiscard]] std::size_t memory_bytes() const noexcept {
         return positions_.capacity() * sizeof(Vec3<S>) + indices_.capacity() * sizeof(Index) +
-               tris_.capacity() * sizeof(LeafTriangle) + bvh_.memory_bytes();
+               blocks_.capacity() * sizeof(detail::Triangle4<S>) + bvh_.memory_bytes();
     }
 
     /// Nearest hit with the watertight test: no ray passes between two triangles sharing an edge.
     [[nodiscard]] std::optional<Hit<S>> intersect(const Ray<S>& ray) const noexcept {
         const detail::WatertightRay<S> prepared(ray);
         Ray<S> r = ray;
-        std::uint32_t hit_index = 0;
+        std::uint32_t hit_block = 0;
+        int hit_lane = 0;
         const bool found = detail::with_shear_axis(prepared, [&](auto kz) {
-            return bvh_.intersect(r, [&](std::uint32_t i, Ray<S>& current) {
-                const LeafTriangle& tri = tris_[i];
-                const auto t = detail::intersect_watertight<kz()>(prepared, current.t_max, tri.v[0], tri.v[1], tri.v[2]);
-                if (!t) return false;
-                current.t_max = *t;
-                hit_index = i;
-                return true;
+            return bvh_.intersect_leaves(r, [&](std::uint32_t first, std::uint32_t count, Ray<S>& current) {
+                bool any = false;
+                for (std::uint32_t b = first / 4; count > 0; ++b) {
+                    const unsigned n = std::min(count, 4u);
+                    count -= n;
+                    std::array<S, 4> t;
+                    unsigned mask = detail::intersect_watertight4<kz()>(prepared, current.t_max, blocks_[b], n, t);
+                    // The nearest lane; among equal distances the first, as one-by-one tests would pick.
+                    for (; mask != 0; mask &= mask - 1) {
+                        const int lane = std::countr_zero(mask);
+                        if (!(t[lane] < current.t_max)) continue;
+                        current.t_max = t[lane];
+                        hit_block = b, hit_lane = lane, any = true;
+                    }
+                }
+                return any;
             });
         });
         if (!found) return std::nullopt;
-        const LeafTriangle& tri = tris_[hit_index];
-        return Hit<S>{r.t_max, ray.at(r.t_max), detail::triangle_normal(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0])};
+        const detail::Triangle4<S>& tri = blocks_[hit_block];
+        const Vec3<S> v0 = tri.vertex(hit_lane, 0);
+        return Hit<S>{r.t_max, ray.at(r.t_max),
+                      detail::triangle_normal(tri.vertex(hit_lane, 1) - v0, tri.vertex(hit_lane, 2) - v0)};
     }
 
     [[nodiscard]] bool occluded(const Ray<S>& ray) const noexcept {
         const detail::WatertightRay<S> prepared(ray);
         return detail::with_shear_axis(prepared, [&](auto kz) {
-            return bvh_.any_hit(ray, [&](std::uint32_t i, const Ray<S>& current) {
-                const LeafTriangle& tri = tris_[i];
-                return detail::intersect_watertight<kz()>(prepared, current.t_max, tri.v[0], tri.v[1], tri.v[2])
-                    .has_value();
+            return bvh_.any_hit_leaves(ray, [&](std::uint32_t first, std::uint32_t count, const Ray<S>& current) {
+                for (std::uint32_t b = first / 4; count > 0; ++b) {
+                    const unsigned n = std::min(count, 4u);
+                    count -= n;
+                    std::array<S, 4> t;
+                    if (detail::intersect_watertight4<kz()>(prepared, current.t_max, blocks_[b], n, t) != 0) return true;
+                }
+                return false;
             });
         });
     }
 
 private:
-    /// Vertices copied in BVH leaf order, so a leaf's triangles are contiguous in memory.
-    struct LeafTriangle {
-        std::array<Vec3<S>, 3> v;
-    };
-
     std::vector<Vec3<S>> positions_;
     std::vector<Index> indices_;
-    std::vector<LeafTriangle, HugePageAllocator<LeafTriangle>> tris_;
+    /// Vertices copied in BVH leaf order, four triangles to a block: blocks_[first / 4] onwards
+    /// holds the leaf (first, count) of the BVH (built with leaf_block = 4).
+    std::vector<detail::Triangle4<S>, HugePageAllocator<detail::Triangle4<S>>> blocks_;
     Bvh<S> bvh_;
 };
 
@@ -98,19 +115,20 @@ TriangleMesh<S>::TriangleMesh(std::vector<Vec3<S>> positions, std::vector<Index>
         boxes.push_back(b);
         centers.push_back(b.center());
     }
+    config.leaf_block = 4;
     bvh_ = Bvh<S>(boxes, centers, config);
-    tris_.reserve(indices_.size());
-    for (std::uint32_t id : bvh_.primitive_indices()) {
-        const Index& idx = indices_[id];
+    const auto ids = bvh_.primitive_indices();
+    blocks_.resize(ids.size() / 4);
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (ids[i] == Bvh<S>::padding) continue;  // stays NaN
+        const Index& idx = indices_[ids[i]];
         const Vec3<S>& v0 = positions_[idx[0]];
         // A triangle without a normal (collinear or coincident vertices, or an area that
-        // underflows) collapses to one point: its edge functions are then exactly 0 and it is
-        // never hit. Its own vertices would not do, as rounding can make the determinant
-        // non-zero for exactly collinear vertices, and the hit would carry a NaN normal.
-        if (detail::triangle_normal(positions_[idx[1]] - v0, positions_[idx[2]] - v0) == Vec3<S>(S(0)))
-            tris_.push_back({{v0, v0, v0}});
-        else
-            tris_.push_back({{v0, positions_[idx[1]], positions_[idx[2]]}});
+        // underflows) stays NaN and is never hit. Its own vertices would not do, as rounding can
+        // make the determinant non-zero for exactly collinear vertices, and the hit would carry a
+        // NaN normal.
+        if (detail::triangle_normal(positions_[idx[1]] - v0, positions_[idx[2]] - v0) != Vec3<S>(S(0)))
+            blocks_[i / 4].set(int(i % 4), v0, positions_[idx[1]], positions_[idx[2]]);
     }
 }
 
