@@ -9,7 +9,16 @@ cd "$(dirname "$0")/.."
 build=${1:-build}
 jobs=$(nproc)
 scripts/install-deps.sh test
-stamp() { echo "test.sh: $* ($SECONDS s)"; }
+# Wall seconds since the start, and the CPU seconds (user + system) of everything it ran: on a
+# loaded machine the CPU time is the figure that compares between runs.
+stamp() {
+    local cpu times_file
+    times_file=$(mktemp)
+    times > "$times_file"  # in this shell: a subshell's `times` does not see this shell's children
+    cpu=$(awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%.0f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$times_file")
+    rm -f "$times_file"
+    echo "test.sh: $* ($SECONDS s wall, $cpu CPU-s)"
+}
 
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_ASSERTS=ON -DPHOTON_MPI=ON  # MPI: the mpi: tests
 cmake --build "$build" -j "$jobs"
