@@ -80,6 +80,7 @@ for entry in "${scene_list[@]}"; do
 done
 sweeps() { [[ ",$sweep," == *",$1,"* ]]; }
 
+scripts/install-deps.sh compare  # POV-Ray, and matplotlib for the plots
 [ -f "$build/CMakeCache.txt" ] ||
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_TESTS=OFF -DPHOTON_BUILD_EXAMPLES=OFF >/dev/null
 cmake --build "$build" --target photon_cli photon_compare
