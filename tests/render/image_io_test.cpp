@@ -6,6 +6,9 @@
 
 #include <photon/film/image_io.hpp>
 
+#include <OpenImageIO/imageio.h>  // reads back what was written, beside photon's reader
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>

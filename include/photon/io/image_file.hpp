@@ -6,7 +6,7 @@
 // declares (a PNG's gAMA or sRGB chunk), else by sRGB for 8- and 16-bit files (PNG, JPEG, GIF,
 // TGA, TIFF, ...), not at all for floating-point files (EXR, HDR) and, in POV-Ray 3.7, not for
 // Netpbm files (PPM, PGM); or by the gamma the scene writes for the image. OpenImageIO lives only
-// here and in film/image_io.hpp: include this header only where files are read.
+// here and in film/image_io_oiio.hpp: include this header only where files are read.
 
 #include <OpenImageIO/imageio.h>
 
