@@ -133,4 +133,19 @@ inline std::optional<photon::Hit<double>> shoot(const StagedScene& b, photon::Ve
     return hit ? std::optional<photon::Hit<double>>(hit->hit) : std::nullopt;
 }
 
+/// The scene built in double from `text`, its warnings collected into `warnings` when given,
+/// with the command line's `overrides`.
+inline dsl::BuiltScene<double> built(const std::string& text, std::vector<dsl::Diagnostic>* warnings = nullptr,
+                                     dsl::SettingsOverrides overrides = {}) {
+    std::vector<dsl::Diagnostic> local;
+    auto& w = warnings ? *warnings : local;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(w);
+    const auto desc = dsl::parse_string(text, "test.pov", po);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(w);
+    bo.overrides = overrides;
+    return dsl::build<double>(desc, bo);
+}
+
 }  // namespace dsl_test
