@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The render functions for the scene language's scene types, DefaultScene<float> and
-// DefaultScene<double>, listed once. Header-only use instantiates them in every translation unit
+// DefaultScene<double>, listed once, with the effects plan (`photon check` prints it without
+// rendering). Header-only use instantiates them in every translation unit
 // that renders (15 to 20 CPU-seconds each at -O3). A program built with PHOTON_SEPARATE_COMPILATION
 // (CMake target photon::compiled) sees them as `extern template` and links the one compiled unit
 // that instantiates them (src/render_instantiations.cpp); other scene types are unaffected.
@@ -27,7 +28,11 @@
                                                       const RenderSettings&, RenderStats&, const SppmPassCallback&,  \
                                                       Film*, std::array<Film, 2>*);                                  \
     EXTERN template Film render_reference<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,          \
-                                                           const RenderSettings&, RenderStats&, Film*);
+                                                           const RenderSettings&, RenderStats&, Film*);              \
+    EXTERN template EffectsPlan plan_effects<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,         \
+                                                              const RenderSettings&);                                \
+    EXTERN template EffectsPlan plan_effects<DefaultScene<S>>(const DefaultScene<S>&, const std::optional<Vec3<S>>&, \
+                                                              const RenderSettings&, const std::vector<std::uint32_t>&);
 
 #if defined(PHOTON_SEPARATE_COMPILATION) && PHOTON_SEPARATE_COMPILATION
 namespace photon {
