@@ -49,6 +49,17 @@ struct RenderResult {
     return s.mode == RenderMode::pm && s.final_gather_rays > 0 && s.irradiance_stride > 0;
 }
 
+/// Pass 2's camera samples per pixel in one round: samples_per_pixel rounded up to an n x n grid.
+[[nodiscard]] inline unsigned samples_per_round(const RenderSettings& s) noexcept {
+    const unsigned grid = s.samples_per_pixel == 1 ? 1u : strata_per_axis(s.samples_per_pixel);
+    return grid * grid;
+}
+
+/// Whether pass 2 samples adaptively: a threshold, and room under aa_max_samples for a second round.
+[[nodiscard]] inline bool samples_adaptively(const RenderSettings& s) noexcept {
+    return s.aa_threshold > 0 && 2 * std::uint64_t(samples_per_round(s)) <= s.aa_max_samples;
+}
+
 /// Irradiance at every `settings.irradiance_stride`-th photon of `photons` (in trace order, with
 /// their surface normals), estimated from `global` as a camera ray would, thin-wall probes
 /// included. Deterministic: sample i is computed from photon i * stride alone.
@@ -204,10 +215,9 @@ template <class SceneT>
     Film film(settings.width, settings.height);
     if (settings.mode == RenderMode::reference) return render_reference(scene, camera, settings, stats);
     const RadianceIntegrator<SceneT> integrator(scene, maps, settings, lights_reaching);
-    const unsigned grid = settings.samples_per_pixel == 1 ? 1u : strata_per_axis(settings.samples_per_pixel);
-    const unsigned spp = grid * grid;
+    const unsigned spp = samples_per_round(settings), grid = strata_per_axis(spp);
     const AdaptiveRule rule{.threshold = settings.aa_threshold, .max_samples = settings.aa_max_samples};
-    const bool adaptive = rule.threshold > 0 && 2 * std::uint64_t(spp) <= rule.max_samples;  // room for a round more
+    const bool adaptive = samples_adaptively(settings);
     if (samples_taken) samples_taken->assign(std::size_t(settings.width) * settings.height, 0);
     std::mutex merge;
     std::size_t rows_done = 0;
