@@ -200,11 +200,12 @@ template <class SceneT>
 }
 
 /// Pass 2: one radiance estimate per jittered sample, averaged per pixel. Pixel p draws from
-/// random stream p, so the film does not depend on the thread count. With settings.aa_threshold
-/// > 0 a pixel takes further rounds of samples, the next points of its own (0,2)-sequence, while
-/// its own samples say its mean is noisy (film/adaptive_sampling.hpp); `samples_taken`, when given, receives each
-/// pixel's count (row-major; 0 for another rank's rows). Lights with `lights_reaching[l] ==
-/// false` get no shadow rays (EffectsPlan::light_emits; empty: all do).
+/// random stream p, so the film does not depend on the thread count. When it samples adaptively
+/// (samples_adaptively), a pixel takes further rounds of samples, the next points of its own
+/// (0,2)-sequence, while its own samples say its mean is noisy (film/adaptive_sampling.hpp).
+/// `samples_taken`, when given, receives each pixel's count (row-major; 0 for another rank's
+/// rows). Lights with `lights_reaching[l] == false` get no shadow rays
+/// (EffectsPlan::light_emits; empty: all do).
 template <class SceneT>
 [[nodiscard]] Film render_image(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera,
                                 const PhotonMaps& maps, const RenderSettings& settings, RenderStats& stats,
