@@ -153,7 +153,11 @@ void print_degraded(const std::map<std::string, std::map<std::string, std::size_
 std::string settings_line(const RenderSettings& s) {
     std::ostringstream o;
     o << s.width << " x " << s.height << ", mode " << to_string(s.mode) << ", " << s.samples_per_pixel
-      << " samples per pixel, ray depth " << s.max_ray_depth << ", " << s.shadow_samples << " shadow samples";
+      << " samples per pixel";
+    const bool pass_two = s.mode == RenderMode::rt || s.mode == RenderMode::pm || s.mode == RenderMode::pm_direct;
+    if (pass_two && samples_adaptively(s))
+        o << " (adaptive to " << s.aa_max_samples << " at threshold " << s.aa_threshold << ")";
+    o << ", ray depth " << s.max_ray_depth << ", " << s.shadow_samples << " shadow samples";
     if (s.mode == RenderMode::sppm)
         o << "; sppm: " << s.sppm_passes << " passes of " << s.sppm_photons_per_pass << " photons, initial radius "
           << (s.sppm_initial_radius > 0 ? std::to_string(s.sppm_initial_radius) : std::string("auto"))

@@ -136,6 +136,11 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
         settings.pm_error_passes = 0;
     else if (!bo.overrides.count("pm_error_passes") && !desc.settings.render.count("pm_error_passes"))
         settings.pm_error_passes = 64;
+    // Adaptive anti-aliasing in rt and pm unless told (--aa-threshold 0 turns it off): samples go
+    // to edges and noisy gathers rather than flat walls (film/adaptive_sampling.hpp).
+    if ((pm || settings.mode == photon::RenderMode::rt) && !bo.overrides.count("aa_threshold") &&
+        !desc.settings.render.count("aa_threshold"))
+        settings.aa_threshold = 0.3f;
     if (pm && settings.target_error > 0 && settings.pm_error_passes == 0)
         throw std::runtime_error("--target-error: pm measures its error only with its estimate (not with --no-error-estimate "
                                  "or pm_error_passes 0)");

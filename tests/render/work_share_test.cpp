@@ -119,3 +119,24 @@ TEST_CASE("ranks sharing a render give the one-process image and statistics in e
         }
     }
 }
+
+TEST_CASE("ranks sharing an adaptive render give the one-process image and sample counts", "[render]") {
+    // Each pixel decides from its own samples: no exchange, whichever rank renders it.
+    const auto box = cornell::make_cornell_box<float>();
+    for (const RenderMode mode : {RenderMode::rt, RenderMode::pm}) {
+        RenderSettings s = small(mode);
+        s.aa_threshold = 0.1f;
+        s.aa_max_samples = 16;
+        const RenderResult one = render(box.scene, box.camera, s);
+        REQUIRE(one.stats.pixel_samples.most > s.samples_per_pixel);
+        for (unsigned ranks : {2u, 3u}) {
+            INFO("mode " << to_string(mode) << ", " << ranks << " ranks");
+            for (const RenderResult& r : ThreadRanks(ranks).render_all(box.scene, box.camera, s)) {
+                CHECK(identical(one.film, r.film));
+                CHECK(r.stats.pixel_samples.pixels == one.stats.pixel_samples.pixels);
+                CHECK(r.stats.pixel_samples.samples == one.stats.pixel_samples.samples);
+                CHECK(r.stats.pixel_samples.most == one.stats.pixel_samples.most);
+            }
+        }
+    }
+}

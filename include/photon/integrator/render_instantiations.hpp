@@ -21,7 +21,7 @@
                                                                   RenderStats&);                                     \
     EXTERN template Film render_image<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,              \
                                                        const PhotonMaps&, const RenderSettings&, RenderStats&,       \
-                                                       const std::vector<bool>&);                                    \
+                                                       const std::vector<bool>&, std::vector<std::uint32_t>*);       \
     EXTERN template IrradianceCache build_irradiance_cache<DefaultScene<S>>(                                         \
         const DefaultScene<S>&, const Camera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
     EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,               \

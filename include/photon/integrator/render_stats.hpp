@@ -2,6 +2,7 @@
 #pragma once
 // What a render did: the columns of the paper's Tables 1 and 2 and more.
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -60,6 +61,22 @@ struct SppmStats {
     double photon_seconds = 0, gather_seconds = 0;  ///< photon tracing and tree building; camera pass and gathering
 };
 
+/// Pass 2's camera samples per pixel (rt, pm, pm-direct): adaptive anti-aliasing spends more of
+/// them where a pixel is noisy.
+struct PixelSampleStats {
+    std::uint64_t pixels = 0;   ///< pixels rendered
+    std::uint64_t samples = 0;  ///< camera samples over them
+    unsigned most = 0;          ///< the most one pixel took
+
+    [[nodiscard]] double mean() const noexcept { return pixels > 0 ? double(samples) / double(pixels) : 0.0; }
+    /// Merges another thread's or rank's pixels (so sum_over_ranks merges the ranks').
+    PixelSampleStats& operator+=(const PixelSampleStats& o) noexcept {
+        pixels += o.pixels, samples += o.samples;
+        most = std::max(most, o.most);
+        return *this;
+    }
+};
+
 /// What the light-path plan saved against the settings (plan/effects_plan.hpp).
 struct PlanSavings {
     std::uint64_t photons_not_shot = 0;  ///< asked for by the settings, not emitted
@@ -74,6 +91,7 @@ struct RenderStats {
     SppmStats sppm;
     RayCounts rays;
     std::uint64_t estimates = 0;  ///< photon map density estimates
+    PixelSampleStats pixel_samples;
     std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
     double precompute_seconds = 0, cache_seconds = 0, render_seconds = 0, total_seconds = 0;
     bool partial = false;  ///< cancelled before every pixel was rendered
@@ -141,6 +159,8 @@ struct RenderStats {
     if (s.rays.walled_lights > 0)
         row("walled lights", "%llu times a wall lay across every shadow ray from a point to an area light: none traced",
             (unsigned long long)s.rays.walled_lights);
+    if (s.pixel_samples.pixels > 0)
+        row("samples per pixel", "mean %.2f, most %u", s.pixel_samples.mean(), s.pixel_samples.most);
     row("density estimates", "%llu", (unsigned long long)s.estimates);
     row("irradiance cache", "%llu records", (unsigned long long)s.cache_records);
     if (s.plan.photons_not_shot > 0 || s.plan.photons_moved > 0 || !s.plan.passes_skipped.empty()) {

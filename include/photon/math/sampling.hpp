@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "frame.hpp"
 #include "rng.hpp"
@@ -118,6 +119,19 @@ template <Scalar S>
     const unsigned i = index % columns, j = index / columns;
     const S below_one = std::nextafter(S(1), S(0));
     return {std::min((S(i) + jitter.x) / S(columns), below_one), std::min((S(j) + jitter.y) / S(rows), below_one)};
+}
+
+/// Point `index` of the Sobol (0,2)-sequence over [0,1)^2, its 32 bits per axis XOR-scrambled
+/// by `scramble` (random digit scrambling: each point is uniform, and every prefix of 2^m points
+/// keeps one point per elementary interval of area 2^-m). Any prefix is a well-spread sample set,
+/// so the sequence can be extended a round at a time (adaptive anti-aliasing).
+template <Scalar S>
+[[nodiscard]] Vec2<S> scrambled_sobol02(std::uint32_t index, std::uint32_t scramble_x, std::uint32_t scramble_y) noexcept {
+    std::uint32_t x = scramble_x, y = scramble_y;
+    for (std::uint32_t v = 1u << 31, w = 1u << 31, n = index; n != 0; n >>= 1, v >>= 1, w ^= w >> 1)
+        if (n & 1u) x ^= v, y ^= w;
+    const S below_one = std::nextafter(S(1), S(0));
+    return {std::min(S(x) * S(0x1p-32), below_one), std::min(S(y) * S(0x1p-32), below_one)};
 }
 
 }  // namespace photon

@@ -233,6 +233,16 @@ inline constexpr RenderSetting render_settings_table[] = {
     {.key = "samples_per_pixel", .keyword = "samples_per_pixel", .flag = "--spp", .lo = 1,
      .hi = SettingsLimits::max_samples, .noun = "samples per pixel", .help = "Samples per pixel (anti-aliasing)",
      .field = member<&RenderSettings::samples_per_pixel>},
+    {.key = "aa_threshold", .keyword = "aa_threshold", .flag = "--aa-threshold", .kind = SettingKind::real,
+     .noun = "aa threshold",
+     .help = "rt, pm and pm-direct: adaptive anti-aliasing; a pixel takes more rounds of samples per pixel while "
+             "the standard error of its mean luminance is above this fraction of the mean (photon render uses 0.3 "
+             "in rt and pm unless told; 0: off, every pixel takes the samples per pixel)",
+     .field = member<&RenderSettings::aa_threshold>},
+    {.key = "aa_max_samples", .keyword = "aa_max_samples", .flag = "--aa-max-spp", .lo = 1,
+     .hi = SettingsLimits::max_samples, .noun = "aa max samples",
+     .help = "Most samples a pixel takes under adaptive anti-aliasing (whole rounds of the samples per pixel)",
+     .field = member<&RenderSettings::aa_max_samples>},
     {.key = "irradiance_stride", .keyword = "irradiance_stride", .flag = "--irradiance-stride", .hi = 1e6,
      .noun = "irradiance stride",
      .help = "Final gather rays read irradiance precomputed at every N-th global photon "
