@@ -137,10 +137,11 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     else if (!bo.overrides.count("pm_error_passes") && !desc.settings.render.count("pm_error_passes"))
         settings.pm_error_passes = 64;
     // Adaptive anti-aliasing in rt and pm unless told (--aa-threshold 0 turns it off): samples go
-    // to edges and noisy gathers rather than flat walls (film/adaptive_sampling.hpp).
+    // to edges and noisy gathers rather than flat walls (film/adaptive_sampling.hpp). 0.1, not a
+    // looser 0.3: on room 1 (pm, 128x96) 3.0e-3 against 4.6e-3 for 9% more time (1.7e-2 off).
     if ((pm || settings.mode == photon::RenderMode::rt) && !bo.overrides.count("aa_threshold") &&
         !desc.settings.render.count("aa_threshold"))
-        settings.aa_threshold = 0.3f;
+        settings.aa_threshold = 0.1f;
     if (pm && settings.target_error > 0 && settings.pm_error_passes == 0)
         throw std::runtime_error("--target-error: pm measures its error only with its estimate (not with --no-error-estimate "
                                  "or pm_error_passes 0)");

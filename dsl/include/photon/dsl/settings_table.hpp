@@ -236,7 +236,7 @@ inline constexpr RenderSetting render_settings_table[] = {
     {.key = "aa_threshold", .keyword = "aa_threshold", .flag = "--aa-threshold", .kind = SettingKind::real,
      .noun = "aa threshold",
      .help = "rt, pm and pm-direct: adaptive anti-aliasing; a pixel takes more rounds of samples per pixel while "
-             "the standard error of its mean luminance is above this fraction of the mean (photon render uses 0.3 "
+             "the standard error of its mean luminance is above this fraction of the mean (photon render uses 0.1 "
              "in rt and pm unless told; 0: off, every pixel takes the samples per pixel)",
      .field = member<&RenderSettings::aa_threshold>},
     {.key = "aa_max_samples", .keyword = "aa_max_samples", .flag = "--aa-max-spp", .lo = 1,
