@@ -54,8 +54,7 @@ template <class SceneT>
     auto seconds_since = [](auto t) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count(); };
     const unsigned width = settings.width, height = settings.height;
     const PathTracer<SceneT> path_tracer(scene, settings);
-    const unsigned grid = settings.samples_per_pixel == 1 ? 1u : strata_per_axis(settings.samples_per_pixel);
-    const unsigned spp = grid * grid;
+    const unsigned spp = samples_per_round(settings), grid = strata_per_axis(spp);
     const bool budget = settings.time_limit > 0 || settings.target_error > 0;
     // Thousands of samples of a pixel would drift in float: sums in double, per half.
     std::array<std::vector<Rgb<double>>, 2> sums;

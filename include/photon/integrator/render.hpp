@@ -49,12 +49,6 @@ struct RenderResult {
     return s.mode == RenderMode::pm && s.final_gather_rays > 0 && s.irradiance_stride > 0;
 }
 
-/// Pass 2's camera samples per pixel in one round: samples_per_pixel rounded up to an n x n grid.
-[[nodiscard]] inline unsigned samples_per_round(const RenderSettings& s) noexcept {
-    const unsigned grid = s.samples_per_pixel == 1 ? 1u : strata_per_axis(s.samples_per_pixel);
-    return grid * grid;
-}
-
 /// Whether pass 2 samples adaptively: a threshold, and room under aa_max_samples for a second round.
 [[nodiscard]] inline bool samples_adaptively(const RenderSettings& s) noexcept {
     return s.aa_threshold > 0 && 2 * std::uint64_t(samples_per_round(s)) <= s.aa_max_samples;

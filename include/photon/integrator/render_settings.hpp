@@ -11,6 +11,7 @@
 #include "../estimator/density_estimate.hpp"
 #include "../film/error_estimate.hpp"
 #include "../light/light.hpp"
+#include "../math/sampling.hpp"  // strata_per_axis
 #include "../parallel/work_share.hpp"
 #include "effect_switches.hpp"
 
@@ -155,6 +156,13 @@ struct SettingsLimits {
     static constexpr unsigned max_sppm_passes = 1'000'000;
     static constexpr std::size_t max_sppm_photons_per_pass = std::size_t(1) << 31;  ///< kd-tree indices are 32-bit
 };
+
+/// Camera samples per pixel in one round (pass 2, and the path tracer's rounds): samples_per_pixel
+/// rounded up to an n x n grid.
+[[nodiscard]] inline unsigned samples_per_round(const RenderSettings& s) noexcept {
+    const unsigned grid = s.samples_per_pixel == 1 ? 1u : strata_per_axis(s.samples_per_pixel);
+    return grid * grid;
+}
 
 /// Throws std::invalid_argument naming the first setting out of range.
 inline void validate(const RenderSettings& s) {
