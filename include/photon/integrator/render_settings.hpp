@@ -71,7 +71,7 @@ struct RenderSettings {
     /// further rounds of `samples_per_pixel` samples while the standard error of its mean
     /// luminance is above this fraction of the mean, up to `aa_max_samples` samples (whole rounds
     /// only). 0: off, every pixel takes `samples_per_pixel` (the library's default; the command
-    /// line uses 0.3 in rt and pm).
+    /// line uses 0.1 in rt and pm).
     float aa_threshold = 0.0f;
     unsigned aa_max_samples = 16;
     unsigned max_ray_depth = 4;      ///< primary ray = 1; a mirror seen in a mirror is depth 3
