@@ -10,10 +10,10 @@
 # told from parsing and set-up (difference quotient between the sizes).
 # Both write an 8-bit binary PPM, the cheapest image either writes (an EXR's zip compression cost
 # photon a fifth of a 1600x1200 point-light run), so that the whole command is mostly tracing.
-# Prints a Markdown table (bench/README.md keeps the last one) and leaves every image, log and
+# Prints a Markdown table (bench/README.md keeps the last runs' summary) and leaves every image, log and
 # statistics file in the output directory.
 #
-#   scripts/bench-scene-rays.sh                          # 800x600 and 1600x1200, about a minute
+#   scripts/bench-scene-rays.sh                          # 800x600 and 1600x1200, 70 to 90 s
 #   scripts/bench-scene-rays.sh --sizes 200x150,400x300  # quicker, for a trial
 #   scripts/bench-scene-rays.sh --shadow-samples 16      # photon's own default instead of 81
 #   scripts/bench-scene-rays.sh --lights area            # the scene's area light only (or point)
