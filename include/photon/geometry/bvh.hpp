@@ -111,6 +111,12 @@ private:
     };
     std::vector<BinaryNode> build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                          BvhConfig config);
+#if PHOTON_BVH_SSE
+    /// The same build for float in SSE (see bvh_build.hpp); BoxCentres: every centre is its box's.
+    template <bool BoxCentres>
+    std::vector<BinaryNode> build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
+                                             BvhConfig config);
+#endif
     void collapse(const std::vector<BinaryNode>& binary, unsigned leaf_block);
     /// Starts loading both cache lines of a node the ray entered, so that the misses of sibling
     /// subtrees overlap instead of queueing one after another.
