@@ -16,7 +16,7 @@ Bvh<S>::Bvh(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, Bv
 
 template <Scalar S>
 auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config)
-    -> std::vector<BinaryNode> {
+    -> BinaryNodes {
 #if PHOTON_BVH_SSE
     // The SSE build counts in signed 32-bit lanes. Meshes and scenes pass box centres: it then
     // recomputes them instead of loading them.
@@ -30,7 +30,7 @@ auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S
     }
 #endif
     const std::size_t n = boxes.size();
-    std::vector<BinaryNode> nodes;
+    BinaryNodes nodes;
     prim_ids_.resize(n);
     std::iota(prim_ids_.begin(), prim_ids_.end(), 0u);
     if (n == 0) return nodes;
@@ -186,10 +186,10 @@ PHOTON_FORCEINLINE __m128 half_areas(const SseBox& a, const SseBox& b, const Sse
 template <Scalar S>
 template <bool BoxCentres>
 auto Bvh<S>::build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config)
-    -> std::vector<BinaryNode> {
+    -> BinaryNodes {
     using detail::SseBox, detail::SsePrim;
     const std::size_t n = boxes.size();
-    std::vector<BinaryNode> nodes;
+    BinaryNodes nodes;
     prim_ids_.resize(n);
     if (n == 0) return nodes;
     const unsigned bin_count = std::max(2u, config.bins);
@@ -425,7 +425,7 @@ auto Bvh<S>::build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Ve
 }
 #endif
 
-template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary, unsigned leaf_block) {
+template <Scalar S> void Bvh<S>::collapse(const BinaryNodes& binary, unsigned leaf_block) {
     nodes_.clear();
     if (binary.empty()) return;
     // With blocks, leaves are copied in the order the collapse reaches them (depth first, as the
