@@ -100,6 +100,8 @@ private:
         std::uint32_t count = 0;  ///< primitives in a leaf; 0 marks an inner node
         [[nodiscard]] bool is_leaf() const noexcept { return count != 0; }
     };
+    // Reserved for 2n nodes, tens of MiB touched once: huge pages spare page faults.
+    using BinaryNodes = std::vector<BinaryNode, HugePageAllocator<BinaryNode>>;
     struct Bin {
         BBox<S> bounds;
         std::uint32_t count = 0;
@@ -109,9 +111,15 @@ private:
         std::uint32_t first, count;
         S t;
     };
-    std::vector<BinaryNode> build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
+    BinaryNodes build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                          BvhConfig config);
-    void collapse(const std::vector<BinaryNode>& binary, unsigned leaf_block);
+#if PHOTON_BVH_SSE
+    /// The same build for float in SSE (see bvh_build.hpp); BoxCentres: every centre is its box's.
+    template <bool BoxCentres>
+    BinaryNodes build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
+                                             BvhConfig config);
+#endif
+    void collapse(const BinaryNodes& binary, unsigned leaf_block);
     /// Starts loading both cache lines of a node the ray entered, so that the misses of sibling
     /// subtrees overlap instead of queueing one after another.
     PHOTON_FORCEINLINE void prefetch(std::uint32_t node) const noexcept {
@@ -201,190 +209,6 @@ template <Scalar S> struct SlabRay {
 };
 
 }  // namespace detail
-
-template <Scalar S>
-Bvh<S>::Bvh(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config) {
-    PHOTON_ASSERT(boxes.size() == centers.size());
-    PHOTON_ASSERT(boxes.size() < std::numeric_limits<std::uint32_t>::max());
-    collapse(build_binary(boxes, centers, config), std::max(1u, config.leaf_block));
-}
-
-template <Scalar S>
-auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config)
-    -> std::vector<BinaryNode> {
-    const std::size_t n = boxes.size();
-    std::vector<BinaryNode> nodes;
-    prim_ids_.resize(n);
-    std::iota(prim_ids_.begin(), prim_ids_.end(), 0u);
-    if (n == 0) return nodes;
-    const unsigned bin_count = std::max(2u, config.bins);
-    const unsigned max_leaf = std::max(1u, config.max_leaf_size);
-    // Primitives tested together in blocks cost by the block (Embree's SAH does the same).
-    const unsigned block = std::max(1u, config.leaf_block);
-    const auto tests = [block](std::uint32_t count) { return S((count + block - 1) / block); };
-    nodes.reserve(2 * n);
-    nodes.push_back({});
-    nodes[0].first = 0;
-    nodes[0].count = static_cast<std::uint32_t>(n);
-
-    struct Task {
-        std::uint32_t node, depth;
-    };
-    std::vector<Task> stack{{0, 1}};
-    std::vector<Bin> bins(bin_count);
-    std::vector<BBox<S>> right_bounds(bin_count);
-
-    while (!stack.empty()) {
-        const Task task = stack.back();
-        stack.pop_back();
-        depth_ = std::max<std::size_t>(depth_, task.depth);
-        BinaryNode& node = nodes[task.node];
-        const std::uint32_t begin = node.first, count = node.count, end = begin + count;
-
-        BBox<S> box, centroid_box;
-        for (std::uint32_t i = begin; i < end; ++i) {
-            box.extend(boxes[prim_ids_[i]]);
-            centroid_box.extend(centers[prim_ids_[i]]);
-        }
-        node.bounds = box;
-        if (count <= 1) continue;
-
-        // Best SAH split over all axes; cost relative to node visits (a constant factor of the
-        // parent's area cancels, so costs are compared as area-weighted primitive counts).
-        S best_cost = std::numeric_limits<S>::infinity();
-        int best_axis = -1;
-        unsigned best_bin = 0;
-        const Vec3<S> extent = centroid_box.extent();
-        for (int axis = 0; axis < 3; ++axis) {
-            if (!(extent[axis] > S(0))) continue;
-            const S scale = S(bin_count) / extent[axis];
-            std::fill(bins.begin(), bins.end(), Bin{});
-            for (std::uint32_t i = begin; i < end; ++i) {
-                const std::uint32_t id = prim_ids_[i];
-                const auto b = std::min(bin_count - 1,
-                                        static_cast<unsigned>((centers[id][axis] - centroid_box.min[axis]) * scale));
-                bins[b].bounds.extend(boxes[id]);
-                ++bins[b].count;
-            }
-            BBox<S> acc;
-            for (unsigned b = bin_count - 1; b > 0; --b) {
-                acc.extend(bins[b].bounds);
-                right_bounds[b] = acc;
-            }
-            acc = {};
-            std::uint32_t left_count = 0;
-            for (unsigned b = 0; b + 1 < bin_count; ++b) {
-                acc.extend(bins[b].bounds);
-                left_count += bins[b].count;
-                const std::uint32_t right_count = count - left_count;
-                if (left_count == 0 || right_count == 0) continue;
-                const S cost = acc.half_area() * tests(left_count) + right_bounds[b + 1].half_area() * tests(right_count);
-                if (cost < best_cost) best_cost = cost, best_axis = axis, best_bin = b;
-            }
-        }
-
-        const S leaf_cost = box.half_area() * tests(count) * S(config.intersection_cost);
-        const S split_cost = box.half_area() + best_cost * S(config.intersection_cost);
-        std::uint32_t mid;
-        if (task.depth >= forced_median_depth && count > max_leaf) {
-            // Pathological SAH chains: fall back to median splits so that the depth stays below
-            // the traversal stack size whatever the input.
-            const int axis = max_dimension(extent);
-            mid = begin + count / 2;
-            std::nth_element(prim_ids_.begin() + begin, prim_ids_.begin() + mid, prim_ids_.begin() + end,
-                             [&](std::uint32_t a, std::uint32_t b) { return centers[a][axis] < centers[b][axis]; });
-        } else if (best_axis >= 0 && (split_cost < leaf_cost || count > max_leaf)) {
-            const S scale = S(bin_count) / extent[best_axis];
-            const auto it = std::partition(prim_ids_.begin() + begin, prim_ids_.begin() + end, [&](std::uint32_t id) {
-                const auto b = std::min(bin_count - 1, static_cast<unsigned>((centers[id][best_axis] -
-                                                                              centroid_box.min[best_axis]) * scale));
-                return b <= best_bin;
-            });
-            mid = static_cast<std::uint32_t>(it - prim_ids_.begin());
-        } else if (count > max_leaf && best_axis < 0) {
-            // All centres coincide: no plane separates them, so split the list in halves to keep
-            // leaves small and the depth logarithmic.
-            mid = begin + count / 2;
-        } else {
-            continue;  // stays a leaf
-        }
-
-        const auto left = static_cast<std::uint32_t>(nodes.size());
-        nodes.push_back({BBox<S>{}, begin, mid - begin});
-        nodes.push_back({BBox<S>{}, mid, end - mid});
-        BinaryNode& parent = nodes[task.node];  // push_back may have moved the array
-        parent.first = left;
-        parent.count = 0;
-        stack.push_back({left + 1, task.depth + 1});
-        stack.push_back({left, task.depth + 1});
-    }
-    return nodes;
-}
-
-template <Scalar S> void Bvh<S>::collapse(const std::vector<BinaryNode>& binary, unsigned leaf_block) {
-    nodes_.clear();
-    if (binary.empty()) return;
-    // With blocks, leaves are copied in the order the collapse reaches them (depth first, as the
-    // nodes), each from a multiple of leaf_block.
-    std::vector<std::uint32_t> padded;
-    if (leaf_block > 1) padded.reserve(prim_ids_.size() + prim_ids_.size() / 2);
-    const auto place_leaf = [&](const BinaryNode& leaf) {
-        if (leaf_block == 1) return leaf.first;
-        padded.resize((padded.size() + leaf_block - 1) / leaf_block * leaf_block, padding);
-        const auto first = static_cast<std::uint32_t>(padded.size());
-        padded.insert(padded.end(), prim_ids_.begin() + leaf.first, prim_ids_.begin() + leaf.first + leaf.count);
-        return first;
-    };
-    bounds_ = binary[0].bounds;
-    // Each 4-wide node takes a binary node's children, then repeatedly opens its largest inner
-    // child (by surface area, the one rays reach most often) until it has four.
-    nodes_.reserve(binary.size() / 3 + 1);
-    nodes_.push_back({});
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> work{{0u, 0u}};  // (binary node, wide node)
-    while (!work.empty()) {
-        const auto [from, to] = work.back();
-        work.pop_back();
-        std::array<std::uint32_t, width> kids{};
-        int n = 0;
-        if (binary[from].is_leaf()) {
-            kids[n++] = from;  // a root that is a leaf
-        } else {
-            kids[n++] = binary[from].first;
-            kids[n++] = binary[from].first + 1;
-            while (n < width) {
-                int open = -1;
-                S largest = -1;
-                for (int i = 0; i < n; ++i)
-                    if (!binary[kids[i]].is_leaf() && binary[kids[i]].bounds.half_area() > largest)
-                        open = i, largest = binary[kids[i]].bounds.half_area();
-                if (open < 0) break;
-                const std::uint32_t inner = kids[open];
-                kids[open] = binary[inner].first;
-                kids[n++] = binary[inner].first + 1;
-            }
-        }
-        Node node;
-        for (int c = 0; c < width; ++c) {
-            const BBox<S> b = c < n ? binary[kids[c]].bounds : BBox<S>{};  // unused: empty box
-            for (int a = 0; a < 3; ++a) node.min[a][c] = b.min[a], node.max[a][c] = b.max[a];
-            if (c >= n) continue;
-            if (binary[kids[c]].is_leaf()) {
-                node.first[c] = place_leaf(binary[kids[c]]);
-                node.count[c] = binary[kids[c]].count;
-            } else {
-                node.first[c] = static_cast<std::uint32_t>(nodes_.size());
-                nodes_.push_back({});
-                work.push_back({kids[c], node.first[c]});
-            }
-        }
-        nodes_[to] = node;
-    }
-    nodes_.shrink_to_fit();
-    if (leaf_block > 1) {
-        padded.resize((padded.size() + leaf_block - 1) / leaf_block * leaf_block, padding);
-        prim_ids_ = std::move(padded);
-    }
-}
 
 template <Scalar S>
 template <class TestFn>
@@ -497,3 +321,5 @@ void Bvh<S>::for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const {
 }
 
 }  // namespace photon
+
+#include "bvh_build.hpp"  // the build: Bvh's constructor, build_binary, collapse

@@ -100,8 +100,10 @@ TriangleMesh<S>::TriangleMesh(std::vector<Vec3<S>> positions, std::vector<Index>
     : positions_(std::move(positions)), indices_(std::move(triangles)) {
     for (const Vec3<S>& p : positions_)
         if (!is_finite(p)) throw std::invalid_argument("mesh: vertex positions must be finite");
-    std::vector<BBox<S>> boxes;
-    std::vector<Vec3<S>> centers;
+    // 36 bytes a triangle, fresh pages at every build (glibc maps arrays this large anew): huge
+    // pages spare most of the page faults.
+    std::vector<BBox<S>, HugePageAllocator<BBox<S>>> boxes;
+    std::vector<Vec3<S>, HugePageAllocator<Vec3<S>>> centers;
     boxes.reserve(indices_.size());
     centers.reserve(indices_.size());
     for (std::size_t t = 0; t < indices_.size(); ++t) {
