@@ -25,19 +25,11 @@ width=${size%x*}
 height=${size#*x}
 povray_mode=${POVRAY_MODE:-radphot_hq}
 
-"$root/scripts/install-deps.sh" bench
-build="${PHOTON_RENDER_BENCH_BUILD_DIR:-$root/build-render-bench}"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_TESTS=OFF \
-  -DPHOTON_BUILD_EXAMPLES=OFF -DPHOTON_BUILD_BENCH=OFF -DPHOTON_INSTALL=OFF >/dev/null
-cmake --build "$build" --target photon_cli >/dev/null
-photon="$build/photon"
+source "$root/scripts/bench-common.sh"
+render_bench_build
 scene="$root/examples/scenes/cornell.pov"
 out="$build/render-bench"
 mkdir -p "$out"
-
-echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) logical cores; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "photon: $("$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")" --version | head -n 1)," \
-  "flags -std=c++20 $(sed -n 's/^CMAKE_CXX_FLAGS_RELEASE:[A-Z]*=//p' "$build/CMakeCache.txt")"
 echo "POV-Ray: $(povray --version 2>&1 | sed -n 's/^POV-Ray \(Unix \)\{0,1\}\([0-9][^ ]*\).*/\2/p' | head -n 1)," \
   "examples/scenes/povray/$povray_mode.inc"
 echo

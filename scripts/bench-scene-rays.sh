@@ -36,20 +36,12 @@ while [ $# -gt 0 ]; do
 done
 IFS=, read -r -a size_list <<<"$sizes"
 
-"$root/scripts/install-deps.sh" bench
-build="${PHOTON_RENDER_BENCH_BUILD_DIR:-$root/build-render-bench}"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPHOTON_BUILD_TESTS=OFF \
-  -DPHOTON_BUILD_EXAMPLES=OFF -DPHOTON_BUILD_BENCH=OFF -DPHOTON_INSTALL=OFF >/dev/null
-cmake --build "$build" --target photon_cli >/dev/null
-photon="$build/photon"
+source "$root/scripts/bench-common.sh"
+echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+render_bench_build
 scene="$root/examples/scenes/cornell.pov"
 out="$build/scene-rays-bench"
 mkdir -p "$out"
-
-echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
-echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) logical cores; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-echo "photon: $(git -C "$root" rev-parse --short HEAD), $("$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")" --version | head -n 1)," \
-  "flags -std=c++20 $(sed -n 's/^CMAKE_CXX_FLAGS_RELEASE:[A-Z]*=//p' "$build/CMakeCache.txt")"
 echo "POV-Ray: $(povray --version 2>&1 | sed -n 's/^POV-Ray \(Unix \)\{0,1\}\([0-9][^ ]*\).*/\2/p' | head -n 1)"
 echo
 
@@ -123,15 +115,23 @@ for light in $lights; do
   done
   if [ ${#size_list[@]} -ge 2 ]; then
     a=$light-${size_list[0]} b=$light-${size_list[-1]}
+    margin=true
     for p in photon povray; do
       dr=$(num %d "${rays[$p,$b]} - ${rays[$p,$a]}")
       dc=$(num %.6f "${cpu[$p,$b]} - ${cpu[$p,$a]}")
+      if awk "BEGIN { exit !($dc <= 0) }"; then  # images too small for the clock to see the difference
+        summary+=("$p, $light light: no more CPU-s measured at ${size_list[-1]} than at ${size_list[0]}; no per-ray cost (use larger --sizes)")
+        margin=false
+        continue
+      fi
       q=$(num %.6f "$dr / $dc")
       eval "q_$p=$q"
       summary+=("$(printf '%s, %s light, %s to %s: %d more rays in %.2f more CPU-s: %.2f M rays per CPU-s at the margin; fixed cost (CPU-s extrapolated to 0 rays) %.2f' \
         "$p" "$light" "${size_list[0]}" "${size_list[-1]}" "$dr" "$dc" "$(num %.6f "$q / 1e6")" "$(num %.6f "${cpu[$p,$a]} - ${rays[$p,$a]} / $q")")")
     done
-    summary+=("$(printf 'photon / POV-Ray at the margin, %s light: %.2f' "$light" "$(num %.6f "$q_photon / $q_povray")")")
+    if $margin; then
+      summary+=("$(printf 'photon / POV-Ray at the margin, %s light: %.2f' "$light" "$(num %.6f "$q_photon / $q_povray")")")
+    fi
   fi
 done
 
