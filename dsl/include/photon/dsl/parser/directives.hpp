@@ -111,15 +111,7 @@ inline void Parser::directive(const Token& d) {
     }
 }
 
-inline bool Parser::is_reserved(std::string_view w) const {
-    return one_of(w, object_keywords) || one_of(w, unsupported_objects) || one_of(w, color_keywords) ||
-           one_of(w, constants) || one_of(w, functions) || one_of(w, object_query_functions) || one_of(w, spline_keywords) || one_of(w, modifier_keywords) || one_of(w, finish_keywords) ||
-           one_of(w, camera_keywords) || one_of(w, global_keywords) || one_of(w, light_keywords) ||
-           one_of(w, other_keywords) || one_of(w, array_keywords) || one_of(w, string_functions) ||
-           one_of(w, function_words) || one_of(w, blend_map_keywords) ||
-           one_of(w, ignored_declarable_blocks) || w == "sky_sphere" || w == "fog" || w == "media" ||
-           w == "density";
-}
+inline bool Parser::is_reserved(std::string_view w) const { return reserved_words().contains(w); }
 
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
     scopes_.front()[name] = Value{std::move(v), at};
@@ -135,9 +127,10 @@ inline const Value* Parser::lookup(const std::string& name) const {
 
 inline const Value* Parser::lookup_in(std::size_t scope, const std::string& name) const {
     if (scope >= scopes_.size()) return nullptr;
-    std::string base;
-    std::vector<std::size_t> indices;
-    if (split_element(name, base, indices)) {
+    if (name.find('[') != std::string::npos) {  // split only an element's name: this runs for every name read
+        std::string base;
+        std::vector<std::size_t> indices;
+        split_element(name, base, indices);
         const auto f = scopes_[scope].find(base);
         const Value* v = f == scopes_[scope].end() ? nullptr : follow(&f->second);
         const Array* a = v ? std::get_if<Array>(&v->data) : nullptr;

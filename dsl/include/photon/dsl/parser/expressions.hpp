@@ -221,8 +221,8 @@ inline Numeric Parser::parse_primary() {
 
 inline Numeric Parser::parse_identifier_value(const Token& t) {
     const std::string& w = t.text;
-    if (one_of(w, color_keywords)) return Numeric::from_color(parse_color(expecting_));
-    if (one_of(w, constants)) {
+    if (color_words().contains(w)) return Numeric::from_color(parse_color(expecting_));
+    if (constant_words().contains(w)) {
         next();
         if (w == "pi") return Numeric::scalar(3.14159265358979323846);
         if (w == "tau") return Numeric::scalar(2 * 3.14159265358979323846);
@@ -257,7 +257,7 @@ inline Numeric Parser::parse_identifier_value(const Token& t) {
         return Numeric::scalar(options_.image_height);
     }
     if (w == "dimensions" || w == "dimension_size") return parse_array_function(next());
-    if (one_of(w, functions)) return parse_function(next());
+    if (builtin_function_words().contains(w)) return parse_function(next());
     if (one_of(w, object_query_functions)) return parse_object_query(next());
     if (const Value* v = lookup(w)) {
         if (w == "photon_version") mentions_photon_version_ = true;

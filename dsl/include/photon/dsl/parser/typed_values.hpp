@@ -71,10 +71,7 @@ inline bool Parser::starts_expression(const Token& t) const {
     if (t.kind == TokenKind::number) return true;
     if (t.kind == TokenKind::symbol) return one_of(t.text, {"(", "<", "-", "+", "!"});
     if (t.kind != TokenKind::identifier) return false;
-    if (one_of(t.text, constants) || one_of(t.text, functions) || one_of(t.text, object_query_functions) ||
-        one_of(t.text, color_keywords))
-        return true;
-    if (t.text == "dimensions" || t.text == "dimension_size") return true;
+    if (expression_words().contains(t.text)) return true;
     const Value* v = lookup(t.text);
     return v && (std::holds_alternative<Numeric>(v->data) || std::holds_alternative<Spline>(v->data) ||
                  std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data));
