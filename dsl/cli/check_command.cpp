@@ -180,10 +180,11 @@ std::vector<std::string> plan_of(const dsl::BuiltScene<float>& built, const Rend
 
 /// `photon check` builds the scene as `render` does, so the build step's errors (a mesh file
 /// missing or broken, at its name in the scene) are reported by check too.
-int run_check(SceneOptions& so) {
-    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
+int run_check(SceneOptions& so, const dsl::SettingsOverrides& overrides) {
+    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(overrides));
     dsl::BuildOptions bo;
     bo.diagnostics = so.sink();
+    bo.overrides = overrides;
     bo.read_image = [](const std::filesystem::path& f, ImageGamma g) { return photon::image_module::read_pixel_grid(f, g); };
     const dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
     report(so.scene, desc, built);

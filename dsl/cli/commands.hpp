@@ -36,8 +36,10 @@ struct SceneOptions {
 
     /// Counts each diagnostic and prints it (unless --quiet without --strict).
     dsl::DiagnosticSink sink();
-    /// How to read the scene: defines, include paths, the animation clock, the image size.
-    dsl::ParseOptions parse_options(unsigned width, unsigned height);
+    /// How to read the scene: defines, include paths, the animation clock, and the image size
+    /// (POV-Ray's image_width and image_height): the command line's --width and --height when
+    /// given, else 800 x 600.
+    dsl::ParseOptions parse_options(const dsl::SettingsOverrides& overrides);
     /// The identifiers clock, frame_number, ... from the animation options (POV-Ray's rules).
     dsl::AnimationClock animation_clock();
     /// Exit status 1 under --strict when there were warnings.
@@ -56,7 +58,9 @@ struct RenderOptions {
 };
 
 int run_render(SceneOptions& so, const RenderOptions& ro);
-int run_check(SceneOptions& so);
+/// `photon check` takes render's settings options too: it reports the settings and the plan a
+/// render with them would use, and reads the scene at their image size.
+int run_check(SceneOptions& so, const dsl::SettingsOverrides& overrides);
 int run_export(SceneOptions& so, const std::string& output);
 
 }  // namespace photon::cli

@@ -27,7 +27,7 @@ namespace photon::cli {
 namespace fs = std::filesystem;
 
 int run_export(SceneOptions& so, const std::string& output) {
-    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(800, 600));
+    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options({}));
     const std::string text = dsl::export_pov(desc, so.sink());
     if (output.empty() || output == "-") {
         std::cout << text;

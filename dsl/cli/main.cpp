@@ -95,6 +95,7 @@ int main(int argc, char** argv) {
 
     CLI::App* check = app.add_subcommand("check", "Read and build a scene, report what it holds and any warnings");
     add_scene_options(*check, so);
+    settings.add_to(*check);  // the settings and the plan a render with them would use
 
     CLI::App* export_pov = app.add_subcommand(
         "export-pov",
@@ -115,7 +116,7 @@ int main(int argc, char** argv) {
             ro.overrides = settings.overrides();
             return photon::cli::run_render(so, ro);
         }
-        if (check->parsed()) return photon::cli::run_check(so);
+        if (check->parsed()) return photon::cli::run_check(so, settings.overrides());
         return photon::cli::run_export(so, export_output);
     } catch (const photon::dsl::Error& e) {
         std::cerr << e.what() << '\n';

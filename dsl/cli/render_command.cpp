@@ -106,16 +106,7 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     bo.diagnostics = so.sink();
     bo.read_image = [](const std::filesystem::path& f, ImageGamma g) { return photon::image_module::read_pixel_grid(f, g); };
     bo.overrides = ro.overrides;
-    // POV-Ray's image_width and image_height are the command line's size when it gives one.
-    auto size = [&](const char* key, unsigned otherwise) {
-        const auto it = bo.overrides.find(key);
-        if (it == bo.overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second))
-            return otherwise;  // build() reports it
-        return unsigned(std::get<std::uint64_t>(it->second));
-    };
-
-    const dsl::SceneDescription desc =
-        dsl::parse_file(so.scene, so.parse_options(size("width", 800), size("height", 600)));
+    const dsl::SceneDescription desc = dsl::parse_file(so.scene, so.parse_options(ro.overrides));
     dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
     if (so.failed_strict()) return exit_error;
     photon::RenderSettings& settings = built.settings;

@@ -6,11 +6,13 @@
 
 #include <photon/dsl/object_geometry.hpp>
 
+#include <cstdint>
 #include <exception>
 #include <iostream>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
+#include <variant>
 
 namespace photon::cli {
 
@@ -22,12 +24,18 @@ dsl::DiagnosticSink SceneOptions::sink() {
     };
 }
 
-dsl::ParseOptions SceneOptions::parse_options(unsigned width, unsigned height) {
+dsl::ParseOptions SceneOptions::parse_options(const dsl::SettingsOverrides& overrides) {
+    auto size = [&](const char* key, unsigned otherwise) {
+        const auto it = overrides.find(key);
+        if (it == overrides.end() || dsl::setting_value_problem(*dsl::find_setting(key), it->second))
+            return otherwise;  // build() reports it
+        return unsigned(std::get<std::uint64_t>(it->second));
+    };
     dsl::ParseOptions o;
     o.diagnostics = sink();
     o.geometry = dsl::library_object_geometry();  // trace(), min_extent(), max_extent()
-    o.image_width = width;
-    o.image_height = height;
+    o.image_width = size("width", 800);
+    o.image_height = size("height", 600);
     for (const auto& dir : include_paths) o.include_paths.emplace_back(dir);
     for (auto& dir : dsl::standard_include_paths()) o.include_paths.push_back(std::move(dir));
     for (const auto& d : defines) {

@@ -148,6 +148,14 @@ expect 0 "$photon" check -D Size=2 -D Other=1 "$work/define.pov"
 expect 1 "$photon" check "$work/define.pov"
 grep -q "undefined identifier \`Size\`" "$work/err" || fail "-D missing not reported"
 
+# check reads the scene at the size render would (image_width, image_height) and reports the
+# settings render's options give.
+printf '#if (image_width != 160 | image_height != 120) #error "not 160 x 120" #end\ncamera { location -5 look_at 0 }\n' >"$work/size.pov"
+expect 1 "$photon" check "$work/size.pov"
+expect 0 "$photon" check "$work/size.pov" --width 160 --height 120 --mode sppm
+grep -q "^settings   160 x 120, mode sppm" "$work/out" || { fail "check --width --height --mode: not in the settings"; cat "$work/out"; }
+expect 2 "$photon" check "$work/size.pov" --width many
+
 # POV-Ray's animation options: an animation scene indexes its arrays by frame_number.
 printf '#declare R = array[3] { 1, 2, 3 }\ncamera { location -9 look_at 0 }\nlight_source { <0, 5, -5>, 1 fade_distance 1 fade_power 2 }\nsphere { 0, R[frame_number - 1] }\n#if (clock = 0.5) box { 0, 1 } #end\n' >"$work/frames.pov"
 expect 1 "$photon" check "$work/frames.pov"
