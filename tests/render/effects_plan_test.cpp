@@ -548,3 +548,35 @@ TEST_CASE("the automatic estimate radius follows the photons' spacing and the sc
     CHECK(set.stats.global.radius == 0.3f);
     CHECK_THAT(format_stats(automatic.stats), Catch::Contains("(from the photon density)"));
 }
+
+TEST_CASE("the plan's dropped items: one line per reason shared by many, at most a screenful", "[plan]") {
+    // A few items print as they are, one line each.
+    const std::vector<std::string> few{"caustic photons: no mirror or glass surface",
+                                       "global photons: one diffuse surface", "final gather: one diffuse surface"};
+    CHECK(dropped_lines(few) == few);
+    // Thousands of objects dropped for one reason (a caustic pilot's verdict): one line.
+    std::vector<std::string> many;
+    for (int i = 0; i < 4313; ++i)
+        many.push_back("caustic photons at object " + std::to_string(i) + " (sphere): the pilot saw under 1%");
+    many.push_back("photons from light 2 (point light): inside object 9 (box)");
+    const auto grouped = dropped_lines(many);
+    REQUIRE(grouped.size() == 2);
+    CHECK(grouped[0] == "caustic photons at object 0 (sphere), object 1 (sphere), object 2 (sphere) and 4310 more: "
+                        "the pilot saw under 1%");
+    CHECK(grouped[1] == many.back());
+    // As many reasons as items: the first lines, then how many more.
+    std::vector<std::string> distinct;
+    for (int i = 0; i < 100; ++i)
+        distinct.push_back("caustic photons at object " + std::to_string(i) + ": inside object " + std::to_string(i + 100));
+    const auto capped = dropped_lines(distinct, 24);
+    REQUIRE(capped.size() == 24);
+    CHECK(capped[22] == distinct[22]);
+    CHECK(capped[23] == "and 77 more lines (100 items dropped in all; EffectsPlan::dropped lists each)");
+    // Cut short, the lines naming the most items come first.
+    distinct.insert(distinct.end(), many.begin(), many.begin() + 50);
+    const auto largest_first = dropped_lines(distinct, 24);
+    REQUIRE(largest_first.size() == 24);
+    CHECK(largest_first[0] == "caustic photons at object 0 (sphere), object 1 (sphere), object 2 (sphere) and 47 more: "
+                              "the pilot saw under 1%");
+    CHECK(largest_first[1] == distinct[0]);
+}

@@ -3,13 +3,71 @@
 // The light-path plan as a few lines of text, for `photon check`, every render and embedders:
 // the path classes, the maps with their photons, the passes, and every dropped item's reason.
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <utility>
+#include <unordered_map>
 #include <vector>
 
 #include "effects_plan.hpp"
 
 namespace photon {
+
+/// The dropped items ("WHAT: WHY") as lines a reader can take in: a scene of thousands of objects
+/// can drop caustic photons at each for one reason, so more than three items with the same WHY
+/// make one line naming the first three ("caustic photons at object 7 (sphere), object 8 (sphere),
+/// object 9 (cone) and 4310 more: WHY"), and past `most` lines those with the most items are
+/// kept, the last saying how many more there are (EffectsPlan::dropped holds every item).
+[[nodiscard]] inline std::vector<std::string> dropped_lines(const std::vector<std::string>& dropped,
+                                                            std::size_t most = 24) {
+    struct Group {
+        std::string why;
+        std::vector<std::string> whats;
+    };
+    std::vector<Group> groups;  // in the order of their first items
+    std::unordered_map<std::string, std::size_t> group_of;
+    for (const std::string& d : dropped) {
+        const auto colon = d.find(": ");
+        const std::string what = colon == std::string::npos ? d : d.substr(0, colon);
+        const std::string why = colon == std::string::npos ? std::string() : d.substr(colon + 2);
+        const auto [it, added] = group_of.try_emplace(why, groups.size());
+        if (added) groups.push_back({why, {}});
+        groups[it->second].whats.push_back(what);
+    }
+    std::vector<std::pair<std::size_t, std::string>> counted;  // items on the line, the line
+    for (const Group& g : groups) {
+        if (g.whats.size() <= 3) {
+            for (const std::string& what : g.whats) counted.emplace_back(1, g.why.empty() ? what : what + ": " + g.why);
+            continue;
+        }
+        // The words the items share up to their subject ("caustic photons at "), said once.
+        const std::string& first = g.whats.front();
+        std::size_t shared = first.size();
+        for (const std::string& w : g.whats)
+            shared = std::min(shared, std::size_t(std::mismatch(first.begin(), first.begin() + std::min(first.size(), w.size()),
+                                                                 w.begin()).first - first.begin()));
+        std::size_t keep = 0;
+        for (const char* joint : {" at ", " from "}) {
+            const std::size_t at = first.rfind(joint, shared);
+            if (at != std::string::npos && at + std::strlen(joint) <= shared) keep = std::max(keep, at + std::strlen(joint));
+        }
+        std::string line = first;
+        for (std::size_t i = 1; i < 3; ++i) line += ", " + g.whats[i].substr(keep);
+        line += " and " + std::to_string(g.whats.size() - 3) + " more";
+        counted.emplace_back(g.whats.size(), g.why.empty() ? line : line + ": " + g.why);
+    }
+    if (counted.size() > most)  // the lines that say the most first
+        std::stable_sort(counted.begin(), counted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<std::string> lines;
+    for (std::size_t i = 0; i < counted.size() && (counted.size() <= most || i + 1 < most); ++i)
+        lines.push_back(counted[i].second);
+    if (counted.size() > most)
+        lines.push_back("and " + std::to_string(counted.size() - lines.size()) + " more lines (" +
+                        std::to_string(dropped.size()) + " items dropped in all; EffectsPlan::dropped lists each)");
+    return lines;
+}
 
 /// One line per item, each "LABEL  text" with the labels padded to one width.
 [[nodiscard]] inline std::vector<std::string> plan_lines(const EffectsPlan& plan, const char* mode) {
@@ -109,7 +167,7 @@ namespace photon {
     pass(plan.irradiance_cache, "irradiance cache");
     pass(plan.final_gather, "final gather");
     line("passes", passes.empty() ? "shadow rays and ray tracing only" : passes);
-    for (const std::string& d : plan.dropped) line("dropped", d);
+    for (const std::string& d : dropped_lines(plan.dropped)) line("dropped", d);
     return lines;
 }
 
