@@ -187,9 +187,11 @@ int run_check(SceneOptions& so, const dsl::SettingsOverrides& overrides) {
     bo.overrides = overrides;
     bo.read_image = [](const std::filesystem::path& f, ImageGamma g) { return photon::image_module::read_pixel_grid(f, g); };
     const dsl::BuiltScene<float> built = dsl::build<float>(desc, bo);
-    report(so.scene, desc, built);
-    std::cout << "warnings   " << so.warnings << '\n';
-    print_degraded(so.degraded);
+    if (!so.quiet) {  // -q: errors only, the exit status says the rest
+        report(so.scene, desc, built);
+        std::cout << "warnings   " << so.warnings << '\n';
+        print_degraded(so.degraded);
+    }
     return so.failed_strict() ? exit_error : EXIT_SUCCESS;
 }
 

@@ -28,6 +28,8 @@ for s in cornell recursive room1 room2; do
     grep -q "^warnings   0" "$work/out" || fail "check $s: warnings"
 done
 grep -q "sphere light at <2.5, 4, 5>, radius 0.2, power 12566.4 W, intensity 1000 W/sr" "$work/out" || fail "check room2: light"
+expect 0 "$photon" check -q "$scenes/room2.pov"
+[ -s "$work/out" ] || [ -s "$work/err" ] && fail "check -q printed more than errors"
 
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/cornell.png" $tiny
 [ -s "$work/cornell.png" ] || fail "no cornell.png"

@@ -12,7 +12,7 @@ if [ "${1:-}" = "--one" ]; then  # one scene: --one PHOTON EXAMPLES OUTDIR SCENE
   log="$out/$(echo "$scene" | tr '/' '_')"
   # At 160 x 120 rather than check's 800 x 600: the size changes only the values of image_width
   # and image_height, and the mesh-camera scenes loop once per pixel (the whole list: 62 CPU-s
-  # against 103, 2026-12-04).
+  # against 103, 2026-12-04; 44 since -q prints errors only).
   if ! (cd "$(dirname "$examples/$scene")" &&
         "$photon" check -q "$(basename "$scene")" --width 160 --height 120 "$@" >/dev/null 2>"$log.err"); then
     { echo "FAIL: $scene"; cat "$log.err"; } >"$log.fail"
