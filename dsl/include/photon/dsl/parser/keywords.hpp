@@ -63,8 +63,6 @@ private:
     std::unordered_set<std::string_view> words_;
 };
 
-inline bool one_of(std::string_view w, const WordSet& set) { return set.contains(w); }
-
 /// " (did you mean `x`?)" for the closest candidate within a small distance, or "".
 [[nodiscard]] inline std::string suggest(std::string_view word, Words candidates) {
     std::string_view best;
