@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Bvh's build: binned SAH into a binary tree, then collapsed into 4-wide nodes. Included at the end
+// Bvh's build: binned SAH into a binary tree, then collapsed into wide nodes. Included at the end
 // of bvh.hpp, which declares the class.
 
 #include "bvh.hpp"
@@ -440,8 +440,8 @@ template <Scalar S> void Bvh<S>::collapse(const BinaryNodes& binary, unsigned le
         return first;
     };
     bounds_ = binary[0].bounds;
-    // Each 4-wide node takes a binary node's children, then repeatedly opens its largest inner
-    // child (by surface area, the one rays reach most often) until it has four.
+    // Each wide node takes a binary node's children, then repeatedly opens its largest inner
+    // child (by surface area, the one rays reach most often) until it has `width`.
     nodes_.reserve(binary.size() / 3 + 1);
     nodes_.push_back({});
     std::vector<std::pair<std::uint32_t, std::uint32_t>> work{{0u, 0u}};  // (binary node, wide node)
