@@ -65,6 +65,9 @@ const PinholeCamera<float> room_camera = camera_at({0, 0.9f, -3.5f}, {0, 0.9f, 0
 bool mentions(const std::vector<std::string>& lines, const std::string& text) {
     return std::any_of(lines.begin(), lines.end(), [&](const std::string& l) { return l.find(text) != l.npos; });
 }
+bool mentions(const std::vector<DroppedEffect>& dropped, const std::string& text) {
+    return std::any_of(dropped.begin(), dropped.end(), [&](const DroppedEffect& d) { return d.line().find(text) != std::string::npos; });
+}
 
 }  // namespace
 
@@ -298,6 +301,10 @@ TEST_CASE("a glass ball behind a wall behind the camera gets no caustic photons 
     CHECK_FALSE(p.caustics.present);
     CHECK_FALSE(p.caustic_pass);
     CHECK(mentions(p.dropped, "caustic photons at object 2 (sphere): behind object 1 (plane)"));
+    // The object and the reason apart, for an embedder that groups or filters them.
+    CHECK(std::any_of(p.dropped.begin(), p.dropped.end(), [](const DroppedEffect& d) {
+        return d.what == "caustic photons at object 2 (sphere)" && d.why.starts_with("behind object 1 (plane)");
+    }));
     CHECK(plan_effects(walled({0, 0.6f, 2}), cam, s).caustic_pass);  // in front of the wall: kept
     const RenderResult planned = render(behind, cam, s);
     CHECK(planned.stats.caustic.emitted == 0);
@@ -550,27 +557,39 @@ TEST_CASE("the automatic estimate radius follows the photons' spacing and the sc
 }
 
 TEST_CASE("the plan's dropped items: one line per reason shared by many, at most a screenful", "[plan]") {
+    const auto lines_of = [](const std::vector<DroppedEffect>& items) {
+        std::vector<std::string> lines;
+        for (const DroppedEffect& d : items) lines.push_back(d.line());
+        return lines;
+    };
     // A few items print as they are, one line each.
-    const std::vector<std::string> few{"caustic photons: no mirror or glass surface",
-                                       "global photons: one diffuse surface", "final gather: one diffuse surface"};
-    CHECK(dropped_lines(few) == few);
+    const std::vector<DroppedEffect> few{{"caustic photons", "no mirror or glass surface"},
+                                         {"global photons", "one diffuse surface"},
+                                         {"final gather", "one diffuse surface"}};
+    CHECK(dropped_lines(few) == std::vector<std::string>{"caustic photons: no mirror or glass surface",
+                                                         "global photons: one diffuse surface",
+                                                         "final gather: one diffuse surface"});
     // Thousands of objects dropped for one reason (a caustic pilot's verdict): one line.
-    std::vector<std::string> many;
+    std::vector<DroppedEffect> many;
     for (int i = 0; i < 4313; ++i)
-        many.push_back("caustic photons at object " + std::to_string(i) + " (sphere): the pilot saw under 1%");
-    many.push_back("photons from light 2 (point light): inside object 9 (box)");
+        many.push_back({"caustic photons at object " + std::to_string(i) + " (sphere)", "the pilot saw under 1%"});
+    many.push_back({"photons from light 2 (point light)", "inside object 9 (box)"});
     const auto grouped = dropped_lines(many);
     REQUIRE(grouped.size() == 2);
     CHECK(grouped[0] == "caustic photons at object 0 (sphere), object 1 (sphere), object 2 (sphere) and 4310 more: "
                         "the pilot saw under 1%");
-    CHECK(grouped[1] == many.back());
+    CHECK(grouped[1] == "photons from light 2 (point light): inside object 9 (box)");
+    // An item whose `what` says it all prints without a colon, and a reason with a colon in it
+    // stays whole.
+    CHECK(dropped_lines({{"caustic photons at object 3", ""}, {"photons from light 0", "behind: object 1"}}) ==
+          std::vector<std::string>{"caustic photons at object 3", "photons from light 0: behind: object 1"});
     // As many reasons as items: the first lines, then how many more.
-    std::vector<std::string> distinct;
+    std::vector<DroppedEffect> distinct;
     for (int i = 0; i < 100; ++i)
-        distinct.push_back("caustic photons at object " + std::to_string(i) + ": inside object " + std::to_string(i + 100));
+        distinct.push_back({"caustic photons at object " + std::to_string(i), "inside object " + std::to_string(i + 100)});
     const auto capped = dropped_lines(distinct, 24);
     REQUIRE(capped.size() == 24);
-    CHECK(capped[22] == distinct[22]);
+    CHECK(capped[22] == lines_of(distinct)[22]);
     CHECK(capped[23] == "and 77 more lines (100 items dropped in all; EffectsPlan::dropped lists each)");
     // Cut short, the lines naming the most items come first.
     distinct.insert(distinct.end(), many.begin(), many.begin() + 50);
@@ -578,5 +597,5 @@ TEST_CASE("the plan's dropped items: one line per reason shared by many, at most
     REQUIRE(largest_first.size() == 24);
     CHECK(largest_first[0] == "caustic photons at object 0 (sphere), object 1 (sphere), object 2 (sphere) and 47 more: "
                               "the pilot saw under 1%");
-    CHECK(largest_first[1] == distinct[0]);
+    CHECK(largest_first[1] == lines_of(distinct)[0]);
 }

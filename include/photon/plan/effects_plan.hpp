@@ -43,12 +43,22 @@ struct PathClassPlan {
 /// What the plan decided for one light.
 struct LightPlan {
     bool emits = true;        ///< photons are shot from it
-    std::string reason;       ///< why not (empty when it emits)
+    std::string name;         ///< "light 1 (point light at <-2, 2, 0>)"
+    std::string reason;       ///< why it emits nothing (empty when it emits)
     std::size_t global_photons = 0, caustic_photons = 0;  ///< its share of each pass
     /// Fraction of its power the pilot saw reach what the camera sees (visible_power.hpp; above 1
     /// for a light whose falloff is not 1/d^2 whose photons bring more than its nominal power); -1:
     /// not measured (no camera, one light, no global pass, or `lights=on`).
     double visible_fraction = -1.0;
+};
+
+/// One thing the settings asked for that the plan does not do.
+struct DroppedEffect {
+    std::string what;  ///< "caustic photons at object 7 (sphere)", naming the object or light
+    std::string why;   ///< "behind object 1 (plane)"; empty when `what` says it all
+    /// "WHAT: WHY", as `photon check` prints an item.
+    [[nodiscard]] std::string line() const { return why.empty() ? what : what + ": " + why; }
+    bool operator==(const DroppedEffect&) const = default;
 };
 
 struct EffectsPlan {
@@ -80,9 +90,9 @@ struct EffectsPlan {
     std::size_t global_photons = 0, caustic_photons = 0;  ///< emitted by the passes that run
     std::size_t environment_photons = 0;  ///< of the global photons, the sky's (shared with the lights by power)
 
-    /// What the settings asked for and the plan does not do, one line each naming the object or
-    /// light and the reason ("caustic photons: no mirror or glass surface").
-    std::vector<std::string> dropped;
+    /// What the settings asked for and the plan does not do, one item each naming the object or
+    /// light and the reason ({"caustic photons", "no mirror or glass surface"}).
+    std::vector<DroppedEffect> dropped;
     std::vector<std::string> passes_skipped;  ///< the passes the settings would run and the plan does not
     std::uint64_t photons_not_shot = 0;       ///< photons the settings asked for and the plan does not emit
     /// Global photons given to other lights than power alone would give them to: those of hidden
@@ -202,16 +212,16 @@ template <class SceneT>
     for (std::size_t l = 0; l < lights.size(); ++l) {
         LightPlan lp;
         const Light<S>& light = lights[l];
-        const std::string name = plan_detail::light_name(light, l);
+        lp.name = plan_detail::light_name(light, l);
         if (!light_is_lit(light)) {
             lp.emits = false;
-            lp.reason = name + ": no power";
+            lp.reason = "no power";
         } else if (force.lights != EffectSwitch::on) {
             // A parallel light comes from a whole plane, not from near its position: never walled off here.
             if (eye && !is_parallel(light))
                 if (const auto why = plan_detail::walled_off(scene, *eye, light_center(light), light_radius(light))) {
                     lp.emits = false;
-                    lp.reason = name + ": " + *why;
+                    lp.reason = *why;
                 }
             if (lp.emits && light_cone(light)) {
                 bool reaches = false;
@@ -219,7 +229,7 @@ template <class SceneT>
                     reaches = plan_detail::cone_can_reach(scene, light, i);
                 if (!reaches) {
                     lp.emits = false;
-                    lp.reason = name + ": its cone meets no object";
+                    lp.reason = "its cone meets no object";
                 }
             }
         }
@@ -252,7 +262,7 @@ template <class SceneT>
     // Caustics of a mirror or glass object walled off from the camera land where it cannot see.
     plan.hidden_caustic_objects.assign(objects.size(), false);
     std::vector<std::uint32_t> seen_specular;
-    std::vector<std::string> walled;
+    std::vector<DroppedEffect> walled;  // "caustic photons at" each, and the wall
     for (std::uint32_t i : specular) {
         const Ball<S> ball = scene.object_bounding_ball(i);
         std::optional<std::string> why;
@@ -263,7 +273,7 @@ template <class SceneT>
             continue;
         }
         plan.hidden_caustic_objects[i] = true;
-        walled.push_back(object_name(scene, i) + ": " + *why);
+        walled.push_back({"caustic photons at " + object_name(scene, i), *why});
     }
     for (std::uint32_t i : unseen_caustics) plan.hidden_caustic_objects.at(i) = true;
     plan.caustics.present = lit && !seen_specular.empty() && !diffuse.empty();
@@ -318,7 +328,7 @@ template <class SceneT>
     const bool want_caustics = forced(force.caustics, plan.caustics.present);
     const bool want_indirect = forced(force.indirect, plan.indirect.present);
     const auto drop = [&](const std::string& what, const std::string& why, bool by_user) {
-        plan.dropped.push_back(what + ": " + (by_user ? "forced off (effects)" : why));
+        plan.dropped.push_back({what, by_user ? "forced off (effects)" : why});
     };
 
     // Caustic pass, as render() runs it: aimed at the caustic targets, from the lights that emit.
@@ -349,11 +359,11 @@ template <class SceneT>
     for (std::uint32_t i : seen_specular) unaimed = unaimed || (collect && !is_aimable_target(scene, i));
     unaimed = unaimed || (collect && !unseen_caustics.empty()) || (collect && sky);
     if (settings.caustic_photons > 0) {
-        for (const std::string& w : walled) plan.dropped.push_back("caustic photons at " + w);
+        plan.dropped.insert(plan.dropped.end(), walled.begin(), walled.end());
         for (std::uint32_t i : unseen_caustics)
-            plan.dropped.push_back("caustic photons at " + object_name(scene, i) +
-                                   ": the pilot saw under 1% of the caustic light land in view come from it; "
-                                   "the global photons carry its caustics");
+            plan.dropped.push_back({"caustic photons at " + object_name(scene, i),
+                                    "the pilot saw under 1% of the caustic light land in view come from it; "
+                                    "the global photons carry its caustics"});
     }
     // Spotlights: the targets outside a light's cone get none of its caustic photons, and a
     // target outside every emitting light's cone gets none at all (its caustics need light that
@@ -364,15 +374,15 @@ template <class SceneT>
             if (is_aimable_target(scene, i) && !plan.hidden_caustic_objects[i]) targets.push_back(i);
         for (std::size_t l = 0; l < lights.size(); ++l)
             if (emits[l] && light_cone(lights[l]) && aim.cones[l].empty())
-                plan.dropped.push_back("caustic photons from " + plan_detail::light_name(lights[l], l) +
-                                       ": its cone reaches no mirror or glass target");
+                plan.dropped.push_back({"caustic photons from " + plan.lights[l].name,
+                                        "its cone reaches no mirror or glass target"});
         for (std::uint32_t i : targets) {
             bool reached = false;
             for (std::size_t l = 0; l < lights.size() && !reached; ++l)
                 reached = emits[l] && plan_detail::cone_can_reach(scene, lights[l], i);
             if (!reached)
-                plan.dropped.push_back("caustic photons at " + object_name(scene, i) +
-                                       ": no light's cone reaches it directly");
+                plan.dropped.push_back({"caustic photons at " + object_name(scene, i),
+                                        "no light's cone reaches it directly"});
         }
     }
 
@@ -421,7 +431,7 @@ template <class SceneT>
         plan.lights[l].caustic_photons = caustic_share[l];
         if (!plan.lights[l].emits) {
             plan.photons_moved += unplanned_share[l];
-            plan.dropped.push_back("photons from " + plan.lights[l].reason);
+            plan.dropped.push_back({"photons from " + plan.lights[l].name, plan.lights[l].reason});
         }
     }
     return plan;

@@ -15,12 +15,12 @@
 
 namespace photon {
 
-/// The dropped items ("WHAT: WHY") as lines a reader can take in: a scene of thousands of objects
-/// can drop caustic photons at each for one reason, so more than three items with the same WHY
-/// make one line naming the first three ("caustic photons at object 7 (sphere), object 8 (sphere),
-/// object 9 (cone) and 4310 more: WHY"), and past `most` lines those with the most items are
-/// kept, the last saying how many more there are (EffectsPlan::dropped holds every item).
-[[nodiscard]] inline std::vector<std::string> dropped_lines(const std::vector<std::string>& dropped,
+/// The dropped items as lines a reader can take in: a scene of thousands of objects can drop
+/// caustic photons at each for one reason, so more than three items with the same `why` make one
+/// line naming the first three ("caustic photons at object 7 (sphere), object 8 (sphere), object
+/// 9 (cone) and 4310 more: WHY"), and past `most` lines those with the most items are kept, the
+/// last saying how many more there are (EffectsPlan::dropped holds every item).
+[[nodiscard]] inline std::vector<std::string> dropped_lines(const std::vector<DroppedEffect>& dropped,
                                                             std::size_t most = 24) {
     struct Group {
         std::string why;
@@ -28,18 +28,15 @@ namespace photon {
     };
     std::vector<Group> groups;  // in the order of their first items
     std::unordered_map<std::string, std::size_t> group_of;
-    for (const std::string& d : dropped) {
-        const auto colon = d.find(": ");
-        const std::string what = colon == std::string::npos ? d : d.substr(0, colon);
-        const std::string why = colon == std::string::npos ? std::string() : d.substr(colon + 2);
-        const auto [it, added] = group_of.try_emplace(why, groups.size());
-        if (added) groups.push_back({why, {}});
-        groups[it->second].whats.push_back(what);
+    for (const DroppedEffect& d : dropped) {
+        const auto [it, added] = group_of.try_emplace(d.why, groups.size());
+        if (added) groups.push_back({d.why, {}});
+        groups[it->second].whats.push_back(d.what);
     }
     std::vector<std::pair<std::size_t, std::string>> counted;  // items on the line, the line
     for (const Group& g : groups) {
         if (g.whats.size() <= 3) {
-            for (const std::string& what : g.whats) counted.emplace_back(1, g.why.empty() ? what : what + ": " + g.why);
+            for (const std::string& what : g.whats) counted.emplace_back(1, DroppedEffect{what, g.why}.line());
             continue;
         }
         // The words the items share up to their subject ("caustic photons at "), said once.
@@ -56,7 +53,7 @@ namespace photon {
         std::string line = first;
         for (std::size_t i = 1; i < 3; ++i) line += ", " + g.whats[i].substr(keep);
         line += " and " + std::to_string(g.whats.size() - 3) + " more";
-        counted.emplace_back(g.whats.size(), g.why.empty() ? line : line + ": " + g.why);
+        counted.emplace_back(g.whats.size(), DroppedEffect{line, g.why}.line());
     }
     if (counted.size() > most)  // the lines that say the most first
         std::stable_sort(counted.begin(), counted.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
