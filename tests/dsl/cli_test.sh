@@ -30,6 +30,10 @@ done
 grep -q "sphere light at <2.5, 4, 5>, radius 0.2, power 12566.4 W, intensity 1000 W/sr" "$work/out" || fail "check room2: light"
 expect 0 "$photon" check -q "$scenes/room2.pov"
 [ -s "$work/out" ] || [ -s "$work/err" ] && fail "check -q printed more than errors"
+# The plan names what it drops by where the file writes it.
+expect 0 "$photon" check "$scenes/plan/boxed-light.pov"
+grep -q "dropped  *photons from light 1 (point light at <1.6, 0.35, 1>, [^)]*boxed-light.pov:39:1): inside object 2 (box, [^)]*boxed-light.pov:46:1)" "$work/out" ||
+    { fail "check boxed-light: the dropped lamp and its crate not named by their places"; grep dropped "$work/out"; }
 
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/cornell.png" $tiny
 [ -s "$work/cornell.png" ] || fail "no cornell.png"

@@ -331,6 +331,25 @@ TEST_CASE("a glass ball behind a wall behind the camera gets no caustic photons 
     }
 }
 
+TEST_CASE("the plan names objects and lights by their labels where the scene gives them", "[plan]") {
+    auto scene = floor_scene([](auto& sc, auto white) {
+        sc.add(Plane<float>({0, 0, 1}, -1.0f), white);  // a wall between the camera and the lamp behind it
+        sc.add_light(PointLight<float>{.position = {0, 2, -3}, .power = Rgb<float>(100.0f)});
+    });
+    scene.set_object_label(1, "room.pov:7:1");
+    scene.set_light_label(1, "the hall lamp");
+    CHECK(scene.object_label(1) == "room.pov:7:1");
+    CHECK(scene.object_label(0).empty());
+    CHECK(scene.light_label(0).empty());
+    CHECK_THROWS_AS(scene.set_object_label(2, "no such object"), std::out_of_range);
+    CHECK_THROWS_AS(scene.set_light_label(2, "no such light"), std::out_of_range);
+    const EffectsPlan p = plan_effects(scene, camera_at({0, 1, 0}, {0, 0.5f, 3}), small());
+    CHECK(p.lights[0].name == "light 0 (point light at <0, 3, 0>)");
+    CHECK(p.lights[1].name == "light 1 (point light at <0, 2, -3>, the hall lamp)");
+    CHECK_FALSE(p.lights[1].emits);
+    CHECK(p.lights[1].reason.starts_with("behind object 1 (plane, room.pov:7:1)"));
+}
+
 TEST_CASE("a glass ball behind the camera, with no wall, gets no caustic photons: the global photons carry its caustics",
           "[plan]") {
     // The camera looks along +z from the origin; ball 1 is in view, ball 2 behind the camera, and

@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -113,16 +114,26 @@ struct EffectsPlan {
 
 namespace plan_detail {
 
-template <class SceneT> [[nodiscard]] std::string object_name(const SceneT& scene, std::uint32_t i) {
-    return "object " + std::to_string(i) + " (" +
-           std::visit([](const auto& shape) { return plan::shape_name(shape); }, scene.objects()[i].shape) + ")";
+/// ", LABEL" for a labelled object or light (Scene::set_object_label), else nothing.
+[[nodiscard]] inline std::string label_suffix(std::string_view label) {
+    return label.empty() ? std::string() : ", " + std::string(label);
 }
 
-template <Scalar S> [[nodiscard]] std::string light_name(const Light<S>& light, std::size_t i) {
+/// "object 2 (box)", or "object 2 (box, room.pov:14:1)" when the scene labels it.
+template <class SceneT> [[nodiscard]] std::string object_name(const SceneT& scene, std::uint32_t i) {
+    return "object " + std::to_string(i) + " (" +
+           std::visit([](const auto& shape) { return plan::shape_name(shape); }, scene.objects()[i].shape) +
+           label_suffix(scene.object_label(i)) + ")";
+}
+
+/// "light 0 (point light at <0, 2, 0>)", with the scene's label for it after a comma.
+template <class SceneT> [[nodiscard]] std::string light_name(const SceneT& scene, std::size_t i) {
+    using S = typename SceneT::scalar_type;
+    const Light<S>& light = scene.lights()[i];
     const Vec3<S> c = light_center(light);
     char at[96];
     std::snprintf(at, sizeof at, "<%g, %g, %g>", double(c.x), double(c.y), double(c.z));
-    return "light " + std::to_string(i) + " (" + (std::holds_alternative<AreaLight<S>>(light) ? "area" : is_parallel(light) ? "parallel" : light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + ")";
+    return "light " + std::to_string(i) + " (" + (std::holds_alternative<AreaLight<S>>(light) ? "area" : is_parallel(light) ? "parallel" : light_radius(light) > S(0) ? "sphere" : "point") + " light at " + at + label_suffix(scene.light_label(i)) + ")";
 }
 
 /// Whether some ray leaving `light` can hit object `i`: false only when the light has a cone
@@ -212,7 +223,7 @@ template <class SceneT>
     for (std::size_t l = 0; l < lights.size(); ++l) {
         LightPlan lp;
         const Light<S>& light = lights[l];
-        lp.name = plan_detail::light_name(light, l);
+        lp.name = plan_detail::light_name(scene, l);
         if (!light_is_lit(light)) {
             lp.emits = false;
             lp.reason = "no power";

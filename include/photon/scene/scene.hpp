@@ -10,6 +10,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -120,6 +121,15 @@ public:
             parallel->fit_beam(environment_ball_);
     }
 
+    /// Labels object `id` or light `index` for what photon prints about it (the effects plan's
+    /// reasons): the scene language gives each its `file:line:column`, a program any name.
+    /// Unlabelled ones are named by index and kind alone. Throws std::out_of_range on a bad id.
+    void set_object_label(std::uint32_t id, std::string label) { set_label(object_labels_, objects_.size(), id, std::move(label)); }
+    void set_light_label(std::size_t index, std::string label) { set_label(light_labels_, lights_.size(), index, std::move(label)); }
+    /// The label set for object `id` or light `index`; empty when none is.
+    [[nodiscard]] std::string_view object_label(std::uint32_t id) const noexcept { return label_of(object_labels_, id); }
+    [[nodiscard]] std::string_view light_label(std::size_t index) const noexcept { return label_of(light_labels_, index); }
+
     /// Sets the sky that rays leaving the scene see and that lights it (environment.hpp).
     void set_environment(Environment<S> environment) { environment_ = std::move(environment); }
     void clear_environment() noexcept { environment_.reset(); }
@@ -205,6 +215,15 @@ public:
     }
 
 private:
+    static void set_label(std::vector<std::string>& labels, std::size_t count, std::size_t i, std::string label) {
+        if (i >= count) throw std::out_of_range("scene: no object or light " + std::to_string(i) + " to label");
+        if (labels.size() <= i) labels.resize(i + 1);
+        labels[i] = std::move(label);
+    }
+    static std::string_view label_of(const std::vector<std::string>& labels, std::size_t i) noexcept {
+        return i < labels.size() ? std::string_view(labels[i]) : std::string_view();
+    }
+
     std::optional<Hit<S>> intersect_object(std::uint32_t id, const Ray<S>& ray) const {
         return std::visit([&](const auto& shape) { return shape.intersect(ray); }, objects_[id].shape);
     }
@@ -219,6 +238,7 @@ private:
     std::optional<Environment<S>> environment_;
     std::vector<Fog<S>> fogs_;
     std::vector<Medium<S>> media_;
+    std::vector<std::string> object_labels_, light_labels_;  ///< set_object_label, set_light_label; may be shorter
     Ball<S> environment_ball_{};
     Bvh<S> bvh_;
     std::vector<std::uint32_t> bvh_objects_;  ///< object id per BVH primitive (leaf order)

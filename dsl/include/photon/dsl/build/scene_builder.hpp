@@ -83,6 +83,7 @@ public:
 
     /// Where each object of the scene was written (a mesh or a union's objects share one place).
     [[nodiscard]] const std::vector<SourceLocation>& object_locations() const noexcept { return object_at_; }
+    [[nodiscard]] const std::vector<SourceLocation>& light_locations() const noexcept { return light_at_; }
 
 private:
     struct Inherited;
@@ -135,6 +136,7 @@ private:
         Inherited mine = inherit(o, parent);
         if (const auto* l = std::get_if<LightSource>(&o.shape)) {
             add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
+            light_at_.resize(scene_->lights().size(), o.at);
             return add_looks_like(*l, mine);
         }
         if (parent.bounds_kept || pov_keeps_bound(o.shape)) warn_bound(o);
@@ -254,6 +256,7 @@ private:
             const Inherited theirs = inherit(child, mine);
             if (const auto* l = std::get_if<LightSource>(&child.shape)) {
                 add_pov_light(*scene_, *l, theirs.transform, child.at, warn_);
+                light_at_.resize(scene_->lights().size(), child.at);
                 add_looks_like(*l, theirs);
                 continue;
             }
@@ -632,7 +635,7 @@ private:
     };
     std::vector<MadeLayered> layered_;
     std::optional<bool> has_media_;  ///< whether any media are written (scene_has_media)
-    std::vector<SourceLocation> object_at_;
+    std::vector<SourceLocation> object_at_, light_at_;  ///< where each of the scene's objects and lights is written
     std::size_t max_primitives_;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
     ImageFiles& images_;
