@@ -7,6 +7,7 @@
 
 #include "dsl_test_util.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace dsl_test;
@@ -202,6 +203,25 @@ TEST_CASE("the camera follows POV-Ray's order: up/right, angle, look_at, transfo
         const auto cs = dsl::resolve_camera(*s.desc.camera, 1);
         CHECK(near(cs.up, {1, 0, 0}));
         CHECK(near(cs.right, {0, -1, 0}));
+    }
+    SECTION("looking along the sky, the camera keeps its right vector, as POV-Ray's does, and says so in a note") {
+        std::vector<dsl::Diagnostic> notes;
+        const auto down = built("camera { location 22*y up y right x look_at 0 }\nsphere { 0, 1 }", &notes);
+        const auto cd = dsl::resolve_camera(*parse("camera { location 22*y up y right x look_at 0 }\nsphere { 0, 1 }").desc.camera, 1);
+        CHECK(near(cd.direction, {0, -1, 0}));
+        CHECK(near(cd.right, {1, 0, 0}));
+        CHECK(near(cd.up, {0, 0, 1}));  // direction x right
+        const auto said = std::find_if(notes.begin(), notes.end(), [](const dsl::Diagnostic& d) {
+            return d.message.find("parallel to the viewing direction") != std::string::npos;
+        });
+        REQUIRE(said != notes.end());
+        CHECK(said->severity == dsl::Severity::note);
+        // A kept right that is not across the view gives a shorter up, as in POV-Ray (not normalised).
+        const auto slanted = parse("camera { location 22*y right <1, 1, 0> look_at 0 }\nsphere { 0, 1 }");
+        CHECK(near(dsl::resolve_camera(*slanted.desc.camera, 1).up, {0, 0, std::sqrt(0.5)}));
+        // Right along the view too: no frame at all.
+        const auto none = parse("camera { location 22*y right y look_at 0 }\nsphere { 0, 1 }");
+        CHECK_THROWS_WITH(dsl::resolve_camera(*none.desc.camera, 1), Contains("parallel to both its sky and its right vector"));
     }
     SECTION("transformations move the resolved camera") {
         const auto p =

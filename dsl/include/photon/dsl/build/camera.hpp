@@ -64,21 +64,23 @@ struct ResolvedCamera {
         const Vector3 forward = *cam.look_at - r.location;
         if (glm::length(forward) == 0.0) throw Error(where("look_at"), "camera look_at equals its location");
         const Vector3 d = glm::normalize(forward);
-        const Vector3 side = glm::cross(cam.sky, d);
-        // Looking along the sky (straight down, say): POV-Ray still renders; photon takes the
-        // axis least aligned with the view as the sky and says so.
-        Vector3 sky_used = cam.sky;
-        if (glm::length(side) == 0.0) {
-            sky_used = std::abs(d.z) < 0.9 ? Vector3(0, 0, 1) : Vector3(1, 0, 0);
+        // Looking along the sky (straight down, say), POV-Ray keeps the right vector it had (the
+        // given one, else <aspect, 0, 0>) and warns; so does photon, with a note: nothing differs.
+        Vector3 right = glm::cross(cam.sky, d);
+        const bool kept_right = std::abs(right.x) < 1e-10 && std::abs(right.y) < 1e-10 && std::abs(right.z) < 1e-10;
+        if (kept_right) {
+            right = r.right;
             if (warn)
-                (*warn)(where("look_at"),
-                        "camera sky (default y) is parallel to the viewing direction: photon uses the sky <" +
-                            format_number(sky_used.x) + ", " + format_number(sky_used.y) + ", " +
-                            format_number(sky_used.z) + ">; give another `sky` to choose",
-                        "approximated camera", "sky");
+                warn->note(where("look_at"), "camera sky <" + format_number(cam.sky.x) + ", " + format_number(cam.sky.y) +
+                                                 ", " + format_number(cam.sky.z) +
+                                                 "> is parallel to the viewing direction: as in POV-Ray, the camera keeps its "
+                                                 "right vector and its up is direction x right; give another `sky` to choose");
         }
-        const Vector3 right = glm::normalize(glm::cross(sky_used, d));
-        r.up = glm::normalize(glm::cross(d, right)) * up_len;
+        right = glm::normalize(right);
+        const Vector3 across = glm::cross(d, right);  // unit unless a kept right is not across the view
+        if (glm::length(across) < 1e-10)
+            throw Error(where("look_at"), "camera: the viewing direction is parallel to both its sky and its right vector");
+        r.up = (kept_right ? across : glm::normalize(across)) * up_len;  // POV-Ray does not normalise it
         r.direction = d * dir_len;
         r.right = right * (handedness > 0 ? right_len : -right_len);
     }
