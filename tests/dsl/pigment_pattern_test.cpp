@@ -7,6 +7,8 @@
 
 #include "dsl_test_util.hpp"
 
+#include <algorithm>
+
 #include <optional>
 
 using namespace dsl_test;
@@ -178,6 +180,35 @@ TEST_CASE("a pattern's brightest colour is what the energy check scales", "[dsl]
     CHECK(m.params().specular.x == Approx(0.3 / 1.3));
 }
 
+TEST_CASE("mandel is evaluated with its iteration count, interior and exterior, without a warning", "[dsl][texture]") {
+    const PatternScene b = build_patterned(
+        "plane { z, 0 pigment { mandel 40 interior 1, 2 exterior 6, 0.25 color_map { [0 rgb 0] [1 rgb 1] } } "
+        "finish { ambient 0 diffuse 1 } }\n"
+        "plane { z, 1 pigment { mandel 25 exponent 2 } finish { ambient 0 diffuse 1 } }\n"
+        "sphere { 0, 1 pigment { rgb 1 } normal { mandel 80 0.5 interior 1, 5 } }\n");
+    INFO(all_messages(b.warnings));
+    CHECK(b.warnings.empty());
+    const photon::FractalParams f{.iterations = 40, .interior_type = 1, .exterior_type = 6, .interior_factor = 2, .exterior_factor = 0.25};
+    for (const Vec3<double>& q : {Vec3<double>(0.1, 0.2, 0), Vec3<double>(0.45, -0.3, 0), Vec3<double>(-0.75, 0.12, 0)})
+        CHECK(albedo(b, 0, q).x == Approx(std::clamp(photon::mandel_value(q.x, q.y, f), 0.0, 1.0)));
+    // POV-Ray's own colour map for mandel: the set (value 1) is cyan, past the map's last entry.
+    const Rgb<double> inside = albedo(b, 1, {0, 0, 1});
+    CHECK(inside.x == Approx(0.0));
+    CHECK(inside.y == Approx(1.0));
+    CHECK(inside.z == Approx(1.0));
+    // The normal reads its iteration count before its bump size.
+    const auto& normal = b.built->scene.material_of(2);
+    CHECK(normal.has_normal_field());
+    // What photon does not evaluate is still said: another exponent, and bad types are errors.
+    const PatternScene cubic = build_patterned("plane { z, 0 pigment { mandel 25 exponent 3 } }\n");
+    CHECK_THAT(all_messages(cubic.warnings), Contains("photon does not evaluate `exponent`"));
+    CHECK_THROWS_WITH(build_patterned("plane { z, 0 pigment { mandel 25 interior 7, 1 } }\n"),
+                      Contains("the type of `interior` (0 to 6) must be a whole number from 0 to 6, found 7"));
+    CHECK_THROWS_WITH(build_patterned("plane { z, 0 pigment { mandel 25 exterior 7, 0.5 } }\n"),
+                      Contains("`exterior 7` takes the iteration count modulo its factor"));
+    CHECK_THROWS_WITH(build_patterned("plane { z, 0 pigment { mandel 0 } }\n"), Contains("mandel's iteration count must be"));
+}
+
 TEST_CASE("export-pov writes a pattern back, and reading it gives the same pattern", "[dsl][texture]") {
     const Parsed p = parse(std::string(pattern_stage) +
                            "sphere { 0, 1 pigment { wood turbulence <0.1, 0.2, 0> octaves 3 frequency 2 cubic_wave "
@@ -185,7 +216,8 @@ TEST_CASE("export-pov writes a pattern back, and reading it gives the same patte
                            "finish { ambient 0 } translate <1, 2, 3> }\n"
                            "box { 0, 1 pigment { checker rgb 1, rgb 0 } }\n"
                            "box { 0, 1 pigment { crackle form <0.3, 0.6, -0.4> metric 3 offset 0.1 solid scale 0.5 } }\n"
-                           "box { 0, 1 pigment { hexagon rgb 0.1, rgb 0.2, rgb 0.3 } }\n");
+                           "box { 0, 1 pigment { hexagon rgb 0.1, rgb 0.2, rgb 0.3 } }\n"
+                           "box { 0, 1 pigment { mandel 70 interior 1, 2 exterior 6, 0.5 } }\n");
     const std::string pov = dsl::export_pov(p.desc);
     INFO(pov);
     const Parsed q = parse(pov);

@@ -42,6 +42,13 @@ Pattern with(PatternKind k, const std::function<void(Pattern&)>& f = {}) {
     return p;
 }
 
+/// mandel with `iterations`, the colouring of `f` (its iterations replaced) and `scale`.
+template <Scalar S> Pigment<S> mandel_pigment(int iterations, FractalParams f, double scale) {
+    f.iterations = iterations;
+    return Pigment<S>(with(PatternKind::mandel, [&](Pattern& p) { p.fractal = f; }), ramp<S>(),
+                      Affine<double>::scale(Vec3<double>(scale)));
+}
+
 /// The pigment each reference line names, as the scene language would build it.
 template <Scalar S> Pigment<S> pigment_named(const std::string& name) {
     using K = PatternKind;
@@ -149,6 +156,21 @@ template <Scalar S> Pigment<S> pigment_named(const std::string& name) {
          }},
         {"wrinkles noise_generator 3", [] {
              return Pigment<S>(with(K::wrinkles, [](Pattern& p) { p.noise_generator = NoiseGenerator::perlin; }), ramp<S>());
+         }},
+        {"mandel", [] { return mandel_pigment<S>(50, {}, 3); }},
+        {"mandel frequency", [] {
+             return Pigment<S>(with(K::mandel, [](Pattern& q) {
+                                   q.fractal.iterations = 25;
+                                   q.wave.frequency = 3;
+                               }),
+                               ramp<S>(), Affine<double>::scale(Vec3<double>(3)));
+         }},
+        {"mandel interior 1", [] { return mandel_pigment<S>(30, {.interior_type = 1, .interior_factor = 2}, 3); }},
+        {"mandel exterior 6", [] {
+             return mandel_pigment<S>(40, {.interior_type = 4, .exterior_type = 6, .interior_factor = 1, .exterior_factor = 0.2}, 3);
+         }},
+        {"mandel exterior 7", [] {
+             return mandel_pigment<S>(40, {.interior_type = 6, .exterior_type = 7, .interior_factor = 0.5, .exterior_factor = 3}, 2);
          }},
         {"color_map", [] {
              return Pigment<S>(with(K::gradient), ColorMap<S>({{0.2, Rgb<S>(S(0.1))},

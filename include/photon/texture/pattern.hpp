@@ -4,6 +4,7 @@
 // (checker to 0 or 1, hexagon to 0, 1/2 or 1) that then picks a colour from a color_map. Each pattern is POV-Ray's formula
 // (source/backend/pattern/pattern.cpp, 3.7.0.10), with its turbulence and wave.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -17,7 +18,16 @@ namespace photon {
 
 enum class PatternKind : std::uint8_t {
     checker, gradient, bozo, spotted, granite, marble, wood, agate, onion, leopard, radial, ripples, waves,
-    spherical, planar, boxed, cylindrical, hexagon, cells, crackle, bumps, dents, wrinkles
+    spherical, planar, boxed, cylindrical, hexagon, cells, crackle, bumps, dents, wrinkles, mandel
+};
+
+/// `mandel`'s iteration count and its colouring of the points inside and outside the set: POV-Ray's
+/// `interior TYPE, FACTOR` and `exterior TYPE, FACTOR` (FractalPattern's InteriorColour and
+/// ExteriorColour; exterior 1, the escape iteration over the count, is the default).
+struct FractalParams {
+    int iterations = 1;
+    int interior_type = 0, exterior_type = 1;
+    double interior_factor = 1, exterior_factor = 1;
 };
 
 /// One pattern with its modifiers, in POV-Ray's meaning and with its defaults.
@@ -26,6 +36,7 @@ struct Pattern {
     Vec3<double> gradient{1, 0, 0};  ///< `gradient` direction (its length does not matter: normalized, as POV-Ray does)
     double agate_turb = 1.0;         ///< `agate_turb`
     CrackleParams crackle{};         ///< `form`, `metric`, `offset`, `solid` of crackle
+    FractalParams fractal{};         ///< mandel's iterations, `interior` and `exterior`
     /// `turbulence`: displaces the point by dturbulence * amount before the pattern (marble and
     /// wood instead use it in their own formula, as POV-Ray does). Zero: no turbulence.
     Vec3<double> turbulence{0.0};
@@ -47,6 +58,48 @@ struct Pattern {
         return kind == PatternKind::checker || kind == PatternKind::hexagon;
     }
 };
+
+/// POV-Ray's Mandelbrot set of exponent 2 over the x-y plane (Mandel2Pattern): z <- z^2 + c from
+/// z = c = x + iy; a point escaping (|z|^2 > 4) at iteration n is coloured by the exterior type,
+/// one that does not within the count by the interior type (mindist2: the least |z|^2 on its way).
+/// Every case is POV-Ray's, its interior type 6 (a^2 + b^2 * factor, as written there) included.
+inline double mandel_value(double x, double y, const FractalParams& f) noexcept {
+    double a = x, b = y, a2 = a * a, b2 = b * b, mindist2 = a2 + b2;
+    for (int n = 0; n < f.iterations; ++n) {
+        b = 2.0 * a * b + y;
+        a = a2 - b2 + x;
+        a2 = a * a;
+        b2 = b * b;
+        const double dist2 = a2 + b2;
+        mindist2 = std::min(mindist2, dist2);
+        if (dist2 > 4.0) {
+            const double k = f.exterior_factor;
+            switch (f.exterior_type) {
+            case 0: return k;
+            case 1: return double(n) / double(f.iterations);
+            case 2: return a * k;
+            case 3: return b * k;
+            case 4: return a2 * k;
+            case 5: return b2 * k;
+            case 6: return std::sqrt(dist2) * k;
+            case 7: return k >= 1.0 ? double(unsigned(n) % unsigned(k)) / k : 0.0;  // POV-Ray divides by zero below 1
+            case 8: return k > 0.0 ? double(unsigned(n) % unsigned(1.0 + k)) / k : 0.0;
+            default: return 0.0;
+            }
+        }
+    }
+    const double k = f.interior_factor;
+    switch (f.interior_type) {
+    case 0: return k;
+    case 1: return std::sqrt(mindist2) * k;
+    case 2: return a * k;
+    case 3: return b * k;
+    case 4: return a2 * k;
+    case 5: return b2 * k;
+    case 6: return a2 + b2 * k;
+    default: return 0.0;
+    }
+}
 
 namespace pattern_detail {
 
@@ -186,6 +239,7 @@ inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_e
     case PatternKind::hexagon: return 0.5 * hexagon_colour(p.x, p.z);
     case PatternKind::cells: return cells_value(p);
     case PatternKind::crackle: return crackle_value(p, pat.crackle, pat.noise_generator);
+    case PatternKind::mandel: return mandel_value(p.x, p.y, pat.fractal);
     }
     return 0.0;
 }

@@ -104,7 +104,8 @@ struct Transform {
 inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient", "bozo",   "spotted", "granite",   "marble",
                                                      "wood",    "agate",    "onion",  "leopard", "radial",    "ripples",
                                                      "waves",   "spherical", "planar", "boxed",  "cylindrical",
-                                                     "hexagon", "cells",  "crackle", "bumps",  "dents",  "wrinkles"};
+                                                     "hexagon", "cells",  "crackle", "bumps",  "dents",  "wrinkles",
+                                                     "mandel"};
 
 /// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).
@@ -141,6 +142,9 @@ struct PigmentPattern {
     Vector3 crackle_form{-1, 1, 0};  ///< crackle's `form`
     double crackle_metric = 2, crackle_offset = 0;
     bool crackle_solid = false;
+    int fractal_iterations = 1;      ///< mandel's iteration count
+    int interior_type = 0, exterior_type = 1;         ///< mandel's `interior` and `exterior` types
+    double interior_factor = 1, exterior_factor = 1;  ///< and their factors
     Vector3 turbulence{0.0};         ///< `turbulence`
     int octaves = 6;
     double omega = 0.5, lambda = 2;

@@ -289,6 +289,7 @@ private:
         }
         out_ << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
+        if (p.name == "mandel") out_ << ' ' << p.fractal_iterations;
         if (p.name == "checker" || p.name == "hexagon") {  // listed colours
             for (std::size_t i = 0; i < p.colors.size(); ++i) out_ << (i ? ", " : " ") << rgbft(p.colors[i].second);
         } else if (!p.nested.empty()) {  // a pigment_map: its patterned entries in their own space
@@ -338,6 +339,10 @@ private:
         if (p.crackle_metric != pov.crackle_metric) out_ << " metric " << num(p.crackle_metric);
         if (p.crackle_offset != pov.crackle_offset) out_ << " offset " << num(p.crackle_offset);
         if (p.crackle_solid) out_ << " solid";
+        if (p.interior_type != pov.interior_type || p.interior_factor != pov.interior_factor)
+            out_ << " interior " << p.interior_type << ", " << num(p.interior_factor);
+        if (p.exterior_type != pov.exterior_type || p.exterior_factor != pov.exterior_factor)
+            out_ << " exterior " << p.exterior_type << ", " << num(p.exterior_factor);
         if (p.noise_generator != pov.noise_generator) out_ << " noise_generator " << p.noise_generator;
         if (p.frequency != pov.frequency) out_ << " frequency " << num(p.frequency);
         if (p.phase != pov.phase) out_ << " phase " << num(p.phase);
@@ -371,6 +376,7 @@ private:
         }
         out_ << "normal { " << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
+        if (p.name == "mandel") out_ << ' ' << p.fractal_iterations;
         out_ << " bump_size " << num(n.amount);
         pattern_modifiers(p);
         if (n.accuracy != Normal{}.accuracy) out_ << " accuracy " << num(n.accuracy);

@@ -25,7 +25,7 @@ namespace photon::dsl {
         {"waves", PatternKind::waves},         {"spherical", PatternKind::spherical}, {"planar", PatternKind::planar},
         {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}, {"hexagon", PatternKind::hexagon},
         {"cells", PatternKind::cells},         {"crackle", PatternKind::crackle},   {"bumps", PatternKind::bumps},
-        {"dents", PatternKind::dents},         {"wrinkles", PatternKind::wrinkles}};
+        {"dents", PatternKind::dents},         {"wrinkles", PatternKind::wrinkles}, {"mandel", PatternKind::mandel}};
     for (const auto& [n, k] : kinds)
         if (name == n) return k;
     throw std::invalid_argument("photon does not evaluate the pattern `" + name + "`");
@@ -53,6 +53,8 @@ namespace photon::dsl {
     out.gradient = p.gradient;
     out.agate_turb = p.agate_turb;
     out.crackle = {.form = p.crackle_form, .metric = p.crackle_metric, .offset = p.crackle_offset, .solid = p.crackle_solid};
+    out.fractal = {.iterations = p.fractal_iterations, .interior_type = p.interior_type, .exterior_type = p.exterior_type,
+                   .interior_factor = p.interior_factor, .exterior_factor = p.exterior_factor};
     out.turbulence = p.turbulence;
     out.octaves = {.octaves = p.octaves, .omega = p.omega, .lambda = p.lambda};
     if (p.noise_generator != 0) out.noise_generator = NoiseGenerator(p.noise_generator);

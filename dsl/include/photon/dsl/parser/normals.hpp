@@ -46,6 +46,7 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
                 st.gradient = g.is_float() ? Vector3(g.at(0)) : Vector3(g.at(0), g.at(1), g.at(2));
                 if (!accept_symbol(",")) continue;
             }
+            if (t.text == "mandel") st.iterations = int(parse_integer("mandel's iteration count", 1, 1e7));
             if (starts_expression(peek())) n.amount = parse_float("the bump size after `" + t.text + "`");
         } else if (t.is_identifier("bump_map")) {
             st.pattern = next();

@@ -47,6 +47,8 @@ struct Parser::PatternState {
     std::optional<Vector3> form;             ///< crackle's `form`
     std::optional<double> metric, offset;    ///< crackle's `metric` and `offset`
     bool solid = false;                      ///< crackle's `solid`
+    std::optional<int> iterations;           ///< mandel's iteration count
+    std::optional<std::pair<int, double>> interior, exterior;  ///< mandel's TYPE, FACTOR
     std::string wave;                     ///< `sine_wave`, ... as written
     std::vector<Token> unsupported;       ///< modifiers photon does not evaluate (warp, uv_mapping, ...)
     bool reduced = false;  ///< a listed colour was itself patterned, and is reduced to its average
@@ -113,6 +115,8 @@ inline std::vector<std::pair<double, Color>> default_color_map(const std::string
     if (pattern == "radial")
         return {{0.0, rgb(0, 1, 1)}, {0.333, rgb(1, 1, 0)}, {0.666, rgb(1, 0, 1)}, {1.0, rgb(0, 1, 1)}};
     if (pattern == "wood") return {{0.6, rgb(0.666, 0.312, 0.2)}, {0.6, rgb(0.4, 0.1333, 0.066)}};
+    if (pattern == "mandel")
+        return {{0.001, rgb(0, 0, 0)}, {0.001, rgb(0, 1, 1)}, {0.012, rgb(1, 1, 0)}, {0.015, rgb(1, 0, 1)}, {0.1, rgb(0, 1, 1)}};
     return {{0.0, rgb(0, 0, 0)}, {1.0, rgb(1, 1, 1)}};
 }
 
@@ -228,6 +232,8 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         } else if (w == "slope" && peek().is_symbol("{")) {
             const Nest nest(*this, t.location);
             skip_block(t);
+        } else if (w == "mandel") {
+            st.iterations = int(parse_integer("mandel's iteration count", 1, 1e7));  // mandel ITERATIONS
         } else if (starts_expression(peek())) {  // gradient V, spiral1 N, julia V, N, slope V, F, F, ...
             const Numeric n = parse_expression_for("the value of `" + w + "`");
             if (w == "gradient") st.gradient = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
@@ -254,15 +260,22 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         else if (w == "agate_turb") st.agate_turb = n.at(0);
         else if (w == "form" && st.pattern.text == "crackle") st.form = v;
         else if (w == "offset" && st.pattern.text == "crackle") st.offset = n.at(0);
-        else if (w == "metric" && st.pattern.text == "crackle") {
+        else if (w == "exponent" && st.pattern.text == "mandel" && n.at(0) == 2.0) {
+            // mandel's exponent: 2, its default, is the one photon evaluates
+        } else if (w == "metric" && st.pattern.text == "crackle") {
             if (!(n.at(0) > 0)) fail(t.location, "crackle's `metric` must be positive, found " + format_number(n.at(0)));
             st.metric = n.at(0);
         } else st.unsupported.push_back(t);
     } else if ((w == "interior" || w == "exterior") && one_of(st.pattern.text, {"mandel", "julia", "magnet"})) {
         next();  // a fractal's colouring inside and outside the set: TYPE, FACTOR
-        parse_float("the type of `" + w + "`");
+        const int most = w == "interior" ? 6 : 8;  // POV-Ray's parser's limits
+        const int type = parse_integer("the type of `" + w + "` (0 to " + std::to_string(most) + ")", 0, most);
         optional_comma();
-        parse_float("the factor of `" + w + "`");
+        SourceLocation at;
+        const double factor = parse_float("the factor of `" + w + "`", &at);
+        if (w == "exterior" && type == 7 && !(factor >= 1.0))
+            fail(at, "`exterior 7` takes the iteration count modulo its factor, which must be at least 1, found " + format_number(factor));
+        (w == "interior" ? st.interior : st.exterior) = std::pair(type, factor);
     } else if (w == "poly_wave") {
         next();
         st.wave = w;

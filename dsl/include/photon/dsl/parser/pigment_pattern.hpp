@@ -100,6 +100,9 @@ inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPatte
     if (st.metric) p.crackle_metric = *st.metric;
     if (st.offset) p.crackle_offset = *st.offset;
     if (st.solid) p.crackle_solid = true;
+    if (st.iterations) p.fractal_iterations = *st.iterations;
+    if (st.interior) std::tie(p.interior_type, p.interior_factor) = *st.interior;
+    if (st.exterior) std::tie(p.exterior_type, p.exterior_factor) = *st.exterior;
     p.octaves = std::clamp(p.octaves, 1, 10);  // as POV-Ray's parser clamps it
 }
 
@@ -107,7 +110,7 @@ inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPatte
 inline bool Parser::modifies_pattern(const PatternState& st) {
     return st.map || st.gradient || st.turbulence || st.octaves || st.noise_generator || st.omega || st.lambda ||
            st.frequency || st.phase || st.agate_turb || st.exponent || !st.wave.empty() || !st.unsupported.empty() ||
-           st.form || st.metric || st.offset || st.solid;
+           st.form || st.metric || st.offset || st.solid || st.iterations || st.interior || st.exterior;
 }
 
 /// The colour a pattern averages to: checker's two colours' mean, a map's average over [0, 1].
