@@ -128,9 +128,9 @@ expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --global-radius
 grep -q "photon: error: --global-radius: the estimate radius must be >= 0, found -1" "$work/err" || { fail "radius bound"; cat "$work/err"; }
 expect 2 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --spp many
 
-printf 'light_source { <0, 5, 0>, rgb 1 }\nsphere { 0, 1 normal { quilted 0.5 } }\n' >"$work/warn.pov"
+printf 'light_source { <0, 5, 0>, rgb 1 }\nsphere { 0, 1 normal { facets 0.5 } }\n' >"$work/warn.pov"
 expect 0 "$photon" check "$work/warn.pov"
-grep -q "warn.pov:2:24: warning: \`normal { quilted }\` is ignored" "$work/err" || fail "warning not printed"
+grep -q "warn.pov:2:24: warning: \`normal { facets }\` is ignored" "$work/err" || fail "warning not printed"
 expect 1 "$photon" check --strict "$work/warn.pov"
 
 # What photon reads but cannot render: warnings, a summary by kind, and errors under --strict.

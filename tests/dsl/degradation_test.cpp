@@ -283,8 +283,8 @@ TEST_CASE("every form of normal parses, and those photon cannot evaluate are ign
 TEST_CASE("photon's own warnings about what it renders differently carry a kind", "[dsl][degradation]") {
     // Every warning of these constructs has its kind and keyword for the summary of `photon check`.
     const Parsed b = parse(std::string(lit) +
-                           "rainbow { distance 1 } ovus { 1, 0.5 } sphere { 0, 1 pigment { quilted } "
-                           "normal { quilted 1 } }\n");
+                           "rainbow { distance 1 } ovus { 1, 0.5 } sphere { 0, 1 pigment { tiling 1 } "
+                           "normal { facets 1 } }\n");
     INFO(all_messages(b.warnings));
     REQUIRE(b.warnings.size() == 4);
     for (const auto& w : b.warnings) {

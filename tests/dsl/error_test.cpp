@@ -330,13 +330,13 @@ TEST_CASE("inputs found by the fuzzer end in clear errors", "[dsl][errors][fuzz]
 
 TEST_CASE("warnings go to the diagnostics sink with their locations", "[dsl][errors]") {
     const auto q = parse(
-        "smooth_triangle { 0, y, x, y, y, y }\nsphere { 0, 1 normal { quilted 0.5 } no_image }\n"
+        "smooth_triangle { 0, y, x, y, y, y }\nsphere { 0, 1 normal { facets 0.5 } no_image }\n"
         "#warning \"check this\"\n");
     REQUIRE(q.warnings.size() == 4);
     CHECK(q.warnings[0].message == "`smooth_triangle` normals are ignored: photon shades triangles flat");
     CHECK(q.warnings[1].message ==
-          "`normal { quilted }` is ignored: photon does not evaluate this pattern (it tilts normals by bumps, "
-          "dents, ripples, waves, wrinkles and the slope of the patterns it evaluates)");
+          "`normal { facets }` is ignored: photon does not evaluate this pattern (it tilts normals by bumps, "
+          "dents, ripples, waves, wrinkles, quilted and the slope of the patterns it evaluates)");
     CHECK(q.warnings[1].location.line == 2);
     CHECK(q.warnings[1].location.column == 24);
     CHECK(q.warnings[2].message == "`no_image` is ignored by photon");

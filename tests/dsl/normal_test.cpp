@@ -121,12 +121,12 @@ TEST_CASE("the slope of a pigment pattern and its modifiers build the library's 
 
 TEST_CASE("normals photon cannot evaluate are ignored with a warning at the pattern", "[dsl][normal]") {
     const auto b = build_normals(
-        "sphere { 0, 1 normal { quilted 0.5 } }\n"
+        "sphere { 0, 1 normal { facets 0.5 } }\n"
         "sphere { 0, 1 normal { bumps 0.5 warp { turbulence 0.2 } } }\n"
         "sphere { 0, 1 normal { bumps no_bump_scale } }\n");
     const auto ignored = places(b.warnings, "ignored effect");
     CHECK(ignored == std::vector<std::string>{"4:24 normal", "5:24 normal"});
-    CHECK_THAT(all_messages(b.warnings), Contains("`normal { quilted }` is ignored: photon does not evaluate this pattern"));
+    CHECK_THAT(all_messages(b.warnings), Contains("`normal { facets }` is ignored: photon does not evaluate this pattern"));
     CHECK_THAT(all_messages(b.warnings), Contains("`normal { bumps }` is ignored: photon does not evaluate `warp` (at"));
     CHECK_THAT(all_messages(b.warnings), Contains("`no_bump_scale` is ignored"));
     CHECK_FALSE(b.scene.material_of(0).has_normal_field());
@@ -144,7 +144,7 @@ TEST_CASE("a bump size after any pattern, with or without a comma, is read", "[d
         "sphere { 0, 1 normal { magnet 1 mandel 50 .2 } }\n");
     CHECK(b.desc.objects[1].texture->normal->amount == 0.3);
     CHECK(b.scene.material_of(0).has_normal_field());
-    CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"6:24 normal", "7:24 normal", "8:33 normal"});
+    CHECK(places(b.warnings, "ignored effect") == std::vector<std::string>{"6:24 normal", "7:24 normal", "8:24 normal"});
 }
 
 TEST_CASE("errors in a normal name their file, line and column", "[dsl][normal][errors]") {

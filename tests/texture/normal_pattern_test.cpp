@@ -89,6 +89,22 @@ TEST_CASE("the slope of gradient x tilts a floor's normal by POV-Ray's amount", 
     CHECK(b.z == Approx(0.0).margin(1e-9));
 }
 
+TEST_CASE("quilted adds POV-Ray's quilt offset times the bump size", "[texture][normal]") {
+    NormalPattern np;
+    np.kind = NormalKind::quilted;
+    np.amount = 0.4;
+    const NormalPerturbation<double> quilted(np);
+    // At a cell's centre the offset is zero; a quarter from it along x, with both controls 1, the
+    // cubic is 0.25^3 + 3 0.25 0.75^2 + 3 0.25^2 0.75 = 0.578125, times 1.154700538.
+    const Vec3<double> centre = quilted({0.5, 0.5, 0.5}, {0, 1, 0});
+    CHECK(centre.y == Approx(1.0));
+    const Vec3<double> b = quilted({0.25, 0.5, 0.5}, {0, 1, 0});
+    const Vec3<double> expected = glm::normalize(Vec3<double>(-0.25 * 0.578125 * 1.154700538 * 0.4, 1, 0));
+    CHECK(b.x == Approx(expected.x).margin(1e-9));
+    CHECK(b.y == Approx(expected.y).margin(1e-9));
+    CHECK(b.z == Approx(0.0).margin(1e-9));
+}
+
 TEST_CASE("a uniformly scaled normal pattern is the same pattern, larger, and as steep", "[texture][normal]") {
     // POV-Ray takes the normal into the pattern's space and back: a uniform scale changes where
     // the bumps are, not how much they tilt.

@@ -60,3 +60,8 @@ Probe("mandel frequency", pigment { mandel 25 frequency 3 scale 3 color_map { Ra
 Probe("mandel interior 1", pigment { mandel 30 interior 1, 2 scale 3 color_map { Ramp } })
 Probe("mandel exterior 6", pigment { mandel 40 exterior 6, 0.2 interior 4, 1 scale 3 color_map { Ramp } })
 Probe("mandel exterior 7", pigment { mandel 40 exterior 7, 3 interior 6, 0.5 scale 2 color_map { Ramp } })
+Probe("spiral1", pigment { spiral1 5 color_map { Ramp } })
+Probe("spiral1 ramp", pigment { spiral1 3 ramp_wave frequency 0.5 color_map { Ramp } })
+Probe("spiral2", pigment { spiral2 4 color_map { Ramp } })
+Probe("quilted", pigment { quilted color_map { Ramp } })
+Probe("quilted controls", pigment { quilted control0 0.3 control1 0.8 scale 0.7 color_map { Ramp } })

@@ -172,6 +172,24 @@ template <Scalar S> Pigment<S> pigment_named(const std::string& name) {
         {"mandel exterior 7", [] {
              return mandel_pigment<S>(40, {.interior_type = 6, .exterior_type = 7, .interior_factor = 0.5, .exterior_factor = 3}, 2);
          }},
+        {"spiral1", [] { return Pigment<S>(with(K::spiral1, [](Pattern& p) { p.spiral_arms = 5; }), ramp<S>()); }},
+        {"spiral1 ramp", [] {
+             return Pigment<S>(with(K::spiral1, [](Pattern& p) {
+                                   p.spiral_arms = 3;
+                                   p.wave.type = WaveType::ramp;
+                                   p.wave.frequency = 0.5;
+                               }),
+                               ramp<S>());
+         }},
+        {"spiral2", [] { return Pigment<S>(with(K::spiral2, [](Pattern& p) { p.spiral_arms = 4; }), ramp<S>()); }},
+        {"quilted", [] { return Pigment<S>(with(K::quilted), ramp<S>()); }},
+        {"quilted controls", [] {
+             return Pigment<S>(with(K::quilted, [](Pattern& p) {
+                                   p.quilt_control0 = 0.3;
+                                   p.quilt_control1 = 0.8;
+                               }),
+                               ramp<S>(), Affine<double>::scale(Vec3<double>(0.7)));
+         }},
         {"color_map", [] {
              return Pigment<S>(with(K::gradient), ColorMap<S>({{0.2, Rgb<S>(S(0.1))},
                                                                {0.5, Rgb<S>(S(0.9))},

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // POV-Ray 3.7's `normal { ... }`: a pattern that tilts the shading normal (Perturb_Normal in
-// source/backend/texture/normal.cpp). bumps, dents, ripples, waves and wrinkles have their own
+// source/backend/texture/normal.cpp). bumps, dents, ripples, waves, wrinkles and quilted have their own
 // formulas; any other pattern photon evaluates tilts the normal down its slope, found from the
 // pattern's values at four points of a small tetrahedron (POV-Ray's Pyramid_Vect). A
 // NormalField (normal_field.hpp), so a Material can take one.
@@ -20,7 +20,7 @@
 namespace photon {
 
 /// The normal patterns with a formula of their own; `slope` uses a pigment Pattern's slope.
-enum class NormalKind : std::uint8_t { bumps, dents, ripples, waves, wrinkles, slope };
+enum class NormalKind : std::uint8_t { bumps, dents, ripples, waves, wrinkles, quilted, slope };
 
 /// One normal pattern with POV-Ray's modifiers and defaults.
 struct NormalPattern {
@@ -71,6 +71,7 @@ inline Vec3<double> tilt(const NormalPattern& np, const Vec3<double>& q) noexcep
         for (int i = 0; i < 10; ++i, scale *= 2.0) sum += glm::abs(pov_dnoise(q * scale) / scale);
         return amount * sum;
     }
+    case NormalKind::quilted: return amount * quilt_offset(q, np.pattern.quilt_control0, np.pattern.quilt_control1);
     case NormalKind::slope: {
         // POV-Ray's fudge factor -5, made independent of the tetrahedron's size.
         const double a = amount * -5.0 * 0.02 / np.accuracy;

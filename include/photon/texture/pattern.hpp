@@ -18,7 +18,8 @@ namespace photon {
 
 enum class PatternKind : std::uint8_t {
     checker, gradient, bozo, spotted, granite, marble, wood, agate, onion, leopard, radial, ripples, waves,
-    spherical, planar, boxed, cylindrical, hexagon, cells, crackle, bumps, dents, wrinkles, mandel
+    spherical, planar, boxed, cylindrical, hexagon, cells, crackle, bumps, dents, wrinkles, mandel, spiral1, spiral2,
+    quilted
 };
 
 /// `mandel`'s iteration count and its colouring of the points inside and outside the set: POV-Ray's
@@ -37,6 +38,8 @@ struct Pattern {
     double agate_turb = 1.0;         ///< `agate_turb`
     CrackleParams crackle{};         ///< `form`, `metric`, `offset`, `solid` of crackle
     FractalParams fractal{};         ///< mandel's iterations, `interior` and `exterior`
+    int spiral_arms = 1;             ///< the number after spiral1 and spiral2
+    double quilt_control0 = 1, quilt_control1 = 1;  ///< quilted's `control0` and `control1`
     /// `turbulence`: displaces the point by dturbulence * amount before the pattern (marble and
     /// wood instead use it in their own formula, as POV-Ray does). Zero: no turbulence.
     Vec3<double> turbulence{0.0};
@@ -44,11 +47,15 @@ struct Pattern {
     NoiseGenerator noise_generator = NoiseGenerator::range_corrected;
     Wave wave{};
 
-    /// A pattern with POV-Ray's defaults for its kind (marble and wood: triangle_wave).
+    /// A pattern with POV-Ray's defaults for its kind (marble, wood and the spirals: triangle_wave;
+    /// quilted: frequency 0, its value not wrapped).
     [[nodiscard]] static Pattern of(PatternKind kind) noexcept {
         Pattern p;
         p.kind = kind;
-        if (kind == PatternKind::marble || kind == PatternKind::wood) p.wave.type = WaveType::triangle;
+        if (kind == PatternKind::marble || kind == PatternKind::wood || kind == PatternKind::spiral1 ||
+            kind == PatternKind::spiral2)
+            p.wave.type = WaveType::triangle;
+        if (kind == PatternKind::quilted) p.wave.frequency = 0.0;
         return p;
     }
     [[nodiscard]] bool has_turbulence() const noexcept { return turbulence != Vec3<double>(0.0); }
@@ -99,6 +106,31 @@ inline double mandel_value(double x, double y, const FractalParams& f) noexcept 
     case 6: return a2 + b2 * k;
     default: return 0.0;
     }
+}
+
+/// POV-Ray's spirals about the z axis (Spiral1Pattern, Spiral2Pattern): the height along z plus
+/// the distance from the axis plus `arms` turns per revolution of the angle; spiral2 folds that
+/// and the distance by a triangle wave each and adds them, two spirals crossing.
+inline double spiral_value(const Vec3<double>& p, int arms, bool crossed) noexcept {
+    constexpr double pi = 3.14159265358979323846;
+    const double rad = std::sqrt(p.x * p.x + p.y * p.y);
+    const double phi = rad == 0.0 ? 0.0 : p.x < 0.0 ? 1.5 * pi - std::asin(p.y / rad) : 0.5 * pi + std::asin(p.y / rad);
+    const double value = p.z + rad + double(arms) * phi / (2.0 * pi);
+    return crossed ? pov_triangle_wave(rad) + pov_triangle_wave(value) : value;
+}
+
+/// POV-Ray's quilted offset: the point's offset from its unit cell's centre, scaled by a cubic
+/// Bezier of its length through the two controls (quilt_cubic); what `normal { quilted }` adds.
+inline Vec3<double> quilt_offset(const Vec3<double>& p, double control0, double control1) noexcept {
+    const Vec3<double> v(p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5);
+    const double t = glm::length(v), it = 1.0 - t;
+    return v * ((t * t * t + 3.0 * t * it * it * control0 + 3.0 * t * t * it * control1) * 1.154700538);
+}
+
+/// POV-Ray's quilted pattern: the quilt offset's components averaged.
+inline double quilted_value(const Vec3<double>& p, double control0, double control1) noexcept {
+    const Vec3<double> v = quilt_offset(p, control0, control1);
+    return (std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z)) / 3.0;
 }
 
 namespace pattern_detail {
@@ -240,6 +272,9 @@ inline double raw_value(const Pattern& pat, const Vec3<double>& p, double cell_e
     case PatternKind::cells: return cells_value(p);
     case PatternKind::crackle: return crackle_value(p, pat.crackle, pat.noise_generator);
     case PatternKind::mandel: return mandel_value(p.x, p.y, pat.fractal);
+    case PatternKind::spiral1:
+    case PatternKind::spiral2: return spiral_value(p, pat.spiral_arms, pat.kind == PatternKind::spiral2);
+    case PatternKind::quilted: return quilted_value(p, pat.quilt_control0, pat.quilt_control1);
     }
     return 0.0;
 }

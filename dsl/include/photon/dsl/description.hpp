@@ -105,7 +105,7 @@ inline constexpr std::string_view evaluated_patterns[] = {"checker", "gradient",
                                                      "wood",    "agate",    "onion",  "leopard", "radial",    "ripples",
                                                      "waves",   "spherical", "planar", "boxed",  "cylindrical",
                                                      "hexagon", "cells",  "crackle", "bumps",  "dents",  "wrinkles",
-                                                     "mandel"};
+                                                     "mandel",  "spiral1", "spiral2", "quilted"};
 
 /// A pigment's pattern as written, with POV-Ray's defaults; build/pigment.hpp makes it a
 /// photon::Pigment (texture/pattern.hpp gives each field's meaning).
@@ -145,6 +145,8 @@ struct PigmentPattern {
     int fractal_iterations = 1;      ///< mandel's iteration count
     int interior_type = 0, exterior_type = 1;         ///< mandel's `interior` and `exterior` types
     double interior_factor = 1, exterior_factor = 1;  ///< and their factors
+    int spiral_arms = 1;                             ///< the number after spiral1 and spiral2
+    double quilt_control0 = 1, quilt_control1 = 1;  ///< quilted's `control0` and `control1`
     Vector3 turbulence{0.0};         ///< `turbulence`
     int octaves = 6;
     double omega = 0.5, lambda = 2;
@@ -166,7 +168,7 @@ struct PigmentPattern {
 
 /// The patterns a `normal` tilts by a formula of its own (POV-Ray's normal-only patterns; ripples
 /// and waves, also pigments, have a normal formula too); any of evaluated_patterns tilts by its slope.
-inline constexpr std::string_view normal_patterns[] = {"bumps", "dents", "ripples", "waves", "wrinkles"};
+inline constexpr std::string_view normal_patterns[] = {"bumps", "dents", "ripples", "waves", "wrinkles", "quilted"};
 
 /// `normal { PATTERN [AMOUNT] MODIFIERS }` as photon evaluates it: the pattern with its modifiers
 /// (`colors` unused), its bump size and accuracy, and its placement, composed like a pigment's.

@@ -290,6 +290,7 @@ private:
         out_ << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
         if (p.name == "mandel") out_ << ' ' << p.fractal_iterations;
+        if (p.name == "spiral1" || p.name == "spiral2") out_ << ' ' << p.spiral_arms;
         if (p.name == "checker" || p.name == "hexagon") {  // listed colours
             for (std::size_t i = 0; i < p.colors.size(); ++i) out_ << (i ? ", " : " ") << rgbft(p.colors[i].second);
         } else if (!p.nested.empty()) {  // a pigment_map: its patterned entries in their own space
@@ -339,6 +340,8 @@ private:
         if (p.crackle_metric != pov.crackle_metric) out_ << " metric " << num(p.crackle_metric);
         if (p.crackle_offset != pov.crackle_offset) out_ << " offset " << num(p.crackle_offset);
         if (p.crackle_solid) out_ << " solid";
+        if (p.quilt_control0 != pov.quilt_control0) out_ << " control0 " << num(p.quilt_control0);
+        if (p.quilt_control1 != pov.quilt_control1) out_ << " control1 " << num(p.quilt_control1);
         if (p.interior_type != pov.interior_type || p.interior_factor != pov.interior_factor)
             out_ << " interior " << p.interior_type << ", " << num(p.interior_factor);
         if (p.exterior_type != pov.exterior_type || p.exterior_factor != pov.exterior_factor)
@@ -377,6 +380,7 @@ private:
         out_ << "normal { " << p.name;
         if (p.name == "gradient") out_ << ' ' << vec(p.gradient);
         if (p.name == "mandel") out_ << ' ' << p.fractal_iterations;
+        if (p.name == "spiral1" || p.name == "spiral2") out_ << ' ' << p.spiral_arms;
         out_ << " bump_size " << num(n.amount);
         pattern_modifiers(p);
         if (n.accuracy != Normal{}.accuracy) out_ << " accuracy " << num(n.accuracy);

@@ -22,7 +22,8 @@ template <Scalar S>
                                                              {"dents", NormalKind::dents},
                                                              {"ripples", NormalKind::ripples},
                                                              {"waves", NormalKind::waves},
-                                                             {"wrinkles", NormalKind::wrinkles}};
+                                                             {"wrinkles", NormalKind::wrinkles},
+                                                             {"quilted", NormalKind::quilted}};
     NormalPattern np;
     np.kind = NormalKind::slope;
     for (const auto& [name, kind] : own)

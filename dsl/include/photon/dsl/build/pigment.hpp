@@ -25,7 +25,8 @@ namespace photon::dsl {
         {"waves", PatternKind::waves},         {"spherical", PatternKind::spherical}, {"planar", PatternKind::planar},
         {"boxed", PatternKind::boxed},         {"cylindrical", PatternKind::cylindrical}, {"hexagon", PatternKind::hexagon},
         {"cells", PatternKind::cells},         {"crackle", PatternKind::crackle},   {"bumps", PatternKind::bumps},
-        {"dents", PatternKind::dents},         {"wrinkles", PatternKind::wrinkles}, {"mandel", PatternKind::mandel}};
+        {"dents", PatternKind::dents},         {"wrinkles", PatternKind::wrinkles}, {"mandel", PatternKind::mandel},
+        {"spiral1", PatternKind::spiral1},     {"spiral2", PatternKind::spiral2},   {"quilted", PatternKind::quilted}};
     for (const auto& [n, k] : kinds)
         if (name == n) return k;
     throw std::invalid_argument("photon does not evaluate the pattern `" + name + "`");
@@ -55,6 +56,9 @@ namespace photon::dsl {
     out.crackle = {.form = p.crackle_form, .metric = p.crackle_metric, .offset = p.crackle_offset, .solid = p.crackle_solid};
     out.fractal = {.iterations = p.fractal_iterations, .interior_type = p.interior_type, .exterior_type = p.exterior_type,
                    .interior_factor = p.interior_factor, .exterior_factor = p.exterior_factor};
+    out.spiral_arms = p.spiral_arms;
+    out.quilt_control0 = p.quilt_control0;
+    out.quilt_control1 = p.quilt_control1;
     out.turbulence = p.turbulence;
     out.octaves = {.octaves = p.octaves, .omega = p.omega, .lambda = p.lambda};
     if (p.noise_generator != 0) out.noise_generator = NoiseGenerator(p.noise_generator);

@@ -47,6 +47,10 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
                 if (!accept_symbol(",")) continue;
             }
             if (t.text == "mandel") st.iterations = int(parse_integer("mandel's iteration count", 1, 1e7));
+            if (t.text == "spiral1" || t.text == "spiral2") {
+                st.arms = parse_spiral_arms(t.text);
+                if (!accept_symbol(",")) continue;
+            }
             if (starts_expression(peek())) n.amount = parse_float("the bump size after `" + t.text + "`");
         } else if (t.is_identifier("bump_map")) {
             st.pattern = next();
@@ -88,7 +92,7 @@ inline Normal Parser::parse_normal(const Token& kw, Normal n) {
     std::string why_not;
     const std::string shown = !name.empty() ? name : stray ? stray->text : "";
     if (!name.empty() && name != "bump_map" && !one_of(name, normal_patterns) && !one_of(name, evaluated_patterns)) {
-        why_not = "photon does not evaluate this pattern (it tilts normals by bumps, dents, ripples, waves, wrinkles "
+        why_not = "photon does not evaluate this pattern (it tilts normals by bumps, dents, ripples, waves, wrinkles, quilted "
                   "and the slope of the patterns it evaluates)";
     } else if (stray) {
         why_not = "photon does not read `" + stray->text + "` (at " + position(stray->location) + ")";

@@ -359,6 +359,7 @@ private:
     bool parse_pattern_item(PatternState& st);
     Color parse_list_color(const std::string& what, bool* patterned = nullptr);
     BlendMap parse_blend_map(const Token& kw);
+    int parse_spiral_arms(const std::string& pattern);
     void parse_blend_entry_body(const Token& kw, BlendMap& map);
     Color pattern_average(const PatternState& st, const Color& fallback, std::string& how);
     std::shared_ptr<const PigmentPattern> evaluated_pattern(const PatternState& st, std::string& why_not) const;

@@ -48,6 +48,8 @@ struct Parser::PatternState {
     std::optional<double> metric, offset;    ///< crackle's `metric` and `offset`
     bool solid = false;                      ///< crackle's `solid`
     std::optional<int> iterations;           ///< mandel's iteration count
+    std::optional<int> arms;                 ///< spiral1's and spiral2's
+    std::optional<double> control0, control1;  ///< quilted's
     std::optional<std::pair<int, double>> interior, exterior;  ///< mandel's TYPE, FACTOR
     std::string wave;                     ///< `sine_wave`, ... as written
     std::vector<Token> unsupported;       ///< modifiers photon does not evaluate (warp, uv_mapping, ...)
@@ -234,6 +236,17 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
             skip_block(t);
         } else if (w == "mandel") {
             st.iterations = int(parse_integer("mandel's iteration count", 1, 1e7));  // mandel ITERATIONS
+        } else if (w == "magnet") {
+            // magnet TYPE mandel ITERATIONS | magnet TYPE julia COMPLEX, ITERATIONS: not a mandel
+            parse_float("the type of `magnet`");
+            const Token form = peek();
+            if (form.is_identifier("mandel") || form.is_identifier("julia")) {
+                next();
+                parse_expression_for("the value of `magnet " + form.text + "`");
+                while (accept_symbol(",")) parse_expression_for("the value of `magnet " + form.text + "`");
+            }
+        } else if (w == "spiral1" || w == "spiral2") {
+            st.arms = parse_spiral_arms(w);  // spiral1 ARMS
         } else if (starts_expression(peek())) {  // gradient V, spiral1 N, julia V, N, slope V, F, F, ...
             const Numeric n = parse_expression_for("the value of `" + w + "`");
             if (w == "gradient") st.gradient = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
@@ -250,7 +263,8 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         const Vector3 v = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
         if (w == "mortar") st.mortar = n.at(0);
         if (w == "brick_size") st.brick_size = v;
-        if (w == "turbulence") st.turbulence = v;
+        if (w == "turbulence" && st.pattern.text.starts_with("spiral")) st.unsupported.push_back(t);  // theirs differs
+        else if (w == "turbulence") st.turbulence = v;
         else if (w == "octaves") st.octaves = int(std::lround(n.at(0)));
         else if (w == "noise_generator") st.noise_generator = int(std::lround(n.at(0)));
         else if (w == "omega") st.omega = n.at(0);
@@ -260,6 +274,8 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         else if (w == "agate_turb") st.agate_turb = n.at(0);
         else if (w == "form" && st.pattern.text == "crackle") st.form = v;
         else if (w == "offset" && st.pattern.text == "crackle") st.offset = n.at(0);
+        else if (w == "control0" && st.pattern.text == "quilted") st.control0 = n.at(0);
+        else if (w == "control1" && st.pattern.text == "quilted") st.control1 = n.at(0);
         else if (w == "exponent" && st.pattern.text == "mandel" && n.at(0) == 2.0) {
             // mandel's exponent: 2, its default, is the one photon evaluates
         } else if (w == "metric" && st.pattern.text == "crackle") {
@@ -293,6 +309,14 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
         return false;
     }
     return true;
+}
+
+// spiral1 ARMS, spiral2 ARMS: the number of arms, truncated to a whole number as POV-Ray's short.
+inline int Parser::parse_spiral_arms(const std::string& pattern) {
+    SourceLocation at;
+    const double arms = parse_float("the number of arms of `" + pattern + "`", &at);
+    if (!(std::fabs(arms) < 32768.0)) fail(at, "`" + pattern + "` takes -32767 to 32767 arms, found " + format_number(arms));
+    return int(arms);
 }
 
 // BLEND_MAP: KEYWORD { [MAP_IDENT] {[ FLOAT [,] ENTRY ]} }

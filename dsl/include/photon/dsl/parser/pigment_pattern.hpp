@@ -85,6 +85,7 @@ inline std::shared_ptr<const PigmentPattern> Parser::evaluated_pattern(const Pat
 
 /// The modifiers written in `st` (gradient, turbulence, octaves, ..., the wave) onto `p`.
 inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPattern& p) {
+    if (p.name == "quilted" && !(st.base && st.base->name == "quilted")) p.frequency = 0;  // POV-Ray's default for it
     if (st.gradient) p.gradient = *st.gradient;
     if (st.turbulence) p.turbulence = *st.turbulence;
     if (st.octaves) p.octaves = *st.octaves;
@@ -101,6 +102,9 @@ inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPatte
     if (st.offset) p.crackle_offset = *st.offset;
     if (st.solid) p.crackle_solid = true;
     if (st.iterations) p.fractal_iterations = *st.iterations;
+    if (st.arms) p.spiral_arms = *st.arms;
+    if (st.control0) p.quilt_control0 = *st.control0;
+    if (st.control1) p.quilt_control1 = *st.control1;
     if (st.interior) std::tie(p.interior_type, p.interior_factor) = *st.interior;
     if (st.exterior) std::tie(p.exterior_type, p.exterior_factor) = *st.exterior;
     p.octaves = std::clamp(p.octaves, 1, 10);  // as POV-Ray's parser clamps it
@@ -110,7 +114,8 @@ inline void Parser::apply_pattern_modifiers(const PatternState& st, PigmentPatte
 inline bool Parser::modifies_pattern(const PatternState& st) {
     return st.map || st.gradient || st.turbulence || st.octaves || st.noise_generator || st.omega || st.lambda ||
            st.frequency || st.phase || st.agate_turb || st.exponent || !st.wave.empty() || !st.unsupported.empty() ||
-           st.form || st.metric || st.offset || st.solid || st.iterations || st.interior || st.exterior;
+           st.form || st.metric || st.offset || st.solid || st.iterations || st.interior || st.exterior ||
+           st.arms || st.control0 || st.control1;
 }
 
 /// The colour a pattern averages to: checker's two colours' mean, a map's average over [0, 1].
