@@ -285,7 +285,7 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
     } else if ((w == "interior" || w == "exterior") && one_of(st.pattern.text, {"mandel", "julia", "magnet"})) {
         next();  // a fractal's colouring inside and outside the set: TYPE, FACTOR
         const int most = w == "interior" ? 6 : 8;  // POV-Ray's parser's limits
-        const int type = parse_integer("the type of `" + w + "` (0 to " + std::to_string(most) + ")", 0, most);
+        const int type = int(parse_integer("the type of `" + w + "` (0 to " + std::to_string(most) + ")", 0, most));
         optional_comma();
         SourceLocation at;
         const double factor = parse_float("the factor of `" + w + "`", &at);
