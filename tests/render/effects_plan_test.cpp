@@ -350,6 +350,36 @@ TEST_CASE("the plan names objects and lights by their labels where the scene giv
     CHECK(p.lights[1].reason.starts_with("behind object 1 (plane, room.pov:7:1)"));
 }
 
+TEST_CASE("a caustic seen only in a mirror is aimed at, one seen nowhere is not", "[plan]") {
+    // The camera looks along +z at a mirror wall at z = 3; the glass ball and the light are behind
+    // the camera, whose caustic on the floor near z = -2 the camera sees only in the mirror.
+    const auto room = [](bool mirror) {
+        return floor_scene([mirror](auto& sc, auto white) {
+            const auto glass = sc.add_material(Material<float>::glass(1.5f));
+            sc.add(Box<float>({-3, 0, 3}, {3, 2.5f, 3.1f}), mirror ? sc.add_material(Material<float>::mirror(Rgb<float>(0.9f))) : white);
+            sc.add(Sphere<float>({0, 0.6f, -2}, 0.5f), glass);
+            sc.add_light(PointLight<float>{.position = {0, 3, -2.5f}, .power = Rgb<float>(100.0f)});
+        });
+    };
+    const auto cam = camera_at({0, 1, 0}, {0, 0.8f, 3});
+    const RenderSettings s = small();
+    const EffectsPlan seen = plan_effects(room(true), cam, s);
+    const auto ball = [](const EffectsPlan& p) {
+        const auto m = std::find_if(p.caustic_pilot.begin(), p.caustic_pilot.end(), [](const auto& t) { return t.object == 2; });
+        REQUIRE(m != p.caustic_pilot.end());
+        return *m;
+    };
+    INFO("ball: landed " << ball(seen).landed << " W, seen " << ball(seen).seen << " W, in mirrors " << ball(seen).seen_in_mirrors);
+    CHECK(ball(seen).seen_in_mirrors > 0.0);
+    CHECK(ball(seen).seen == Approx(ball(seen).seen_in_mirrors));  // none of it directly
+    CHECK_FALSE(seen.hidden_caustic_objects[2]);
+    // The same room with a white wall instead of the mirror: the caustic is out of view, but for
+    // the little the ball's surface reflects forward onto the wall and floor in view.
+    const EffectsPlan unseen = plan_effects(room(false), cam, s);
+    CHECK(ball(unseen).seen_in_mirrors == 0.0);
+    CHECK(ball(unseen).seen < 0.05 * ball(seen).seen);
+}
+
 TEST_CASE("a glass ball behind the camera, with no wall, gets no caustic photons: the global photons carry its caustics",
           "[plan]") {
     // The camera looks along +z from the origin; ball 1 is in view, ball 2 behind the camera, and

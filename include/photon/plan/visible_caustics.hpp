@@ -2,7 +2,8 @@
 #pragma once
 // Aiming caustic photons only at the mirrors and glass whose caustics the camera sees. A pilot of
 // a few hundred caustic photons per target, aimed as the caustic pass aims them, measures how much
-// of the caustic power each target sends lands on a point the camera sees directly. A target
+// of the caustic power each target sends lands on a point the camera sees, directly or in a mirror
+// or through glass (mirror_view.hpp samples where it sees those images). A target
 // whose caustics the pilot never saw land in view (a glass ball behind the camera), or that brings
 // under 1% of the caustic light the pilot saw, is not aimed at: its caustic photons go to the
 // others. Nothing is lost by a wrong guess: the global pass hands the caustic map every L S+ D
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "../tracing/caustic_targets.hpp"
+#include "mirror_view.hpp"
 #include "../tracing/photon_tracer.hpp"
 #include "visible_power.hpp"
 
@@ -35,7 +37,8 @@ struct TargetCausticsSeen {
     std::uint32_t object = 0;
     unsigned photons = 0;  ///< pilot photons aimed at it
     double landed = 0.0;   ///< caustic power (W, channel mean) that landed on a diffuse surface
-    double seen = 0.0;     ///< of which on a point the camera sees directly, from the side it landed on
+    double seen = 0.0;     ///< of which on a point the camera sees: directly, from the side it landed on, or in a mirror
+    double seen_in_mirrors = 0.0;  ///< of `seen`, on points seen only by way of mirrors or glass
 };
 
 /// The pilot for every object in `targets` (aimable caustic targets), with the lights `emits`
@@ -49,6 +52,7 @@ template <class SceneT>
     using S = typename SceneT::scalar_type;
     std::vector<TargetCausticsSeen> result;
     if (targets.empty()) return result;
+    const MirrorView<S> mirrors(scene, camera);
     const unsigned per_target = unsigned(std::max<std::size_t>(
         32, std::min<std::size_t>(pilot.photons_per_target, pilot.max_photons / targets.size())));
     for (std::size_t k = 0; k < targets.size(); ++k) {
@@ -68,7 +72,12 @@ template <class SceneT>
             const Vec3<S> at(p.position);
             // The direction slot points into the surface from the side the photon arrived on.
             const bool camera_side = on_camera_side(camera, at, Vec3<S>(p.packed.incident_direction()));
-            if (camera_side && camera_sees(scene, camera, at)) measured.seen += power;
+            if (camera_side && camera_sees(scene, camera, at)) {
+                measured.seen += power;
+            } else if (mirrors.sees(at)) {
+                measured.seen += power;
+                measured.seen_in_mirrors += power;
+            }
         }
         result.push_back(measured);
     }
