@@ -247,7 +247,7 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
             }
         } else if (w == "spiral1" || w == "spiral2") {
             st.arms = parse_spiral_arms(w);  // spiral1 ARMS
-        } else if (starts_expression(peek())) {  // gradient V, spiral1 N, julia V, N, slope V, F, F, ...
+        } else if (starts_expression(peek())) {  // gradient V, julia V, N, slope V, F, F, tiling N, ...
             const Numeric n = parse_expression_for("the value of `" + w + "`");
             if (w == "gradient") st.gradient = n.is_float() ? Vector3(n.at(0)) : Vector3(n.at(0), n.at(1), n.at(2));
             while (accept_symbol(",")) parse_expression_for("the value of `" + w + "`");
