@@ -89,8 +89,10 @@ inline double mandel_value(double x, double y, const FractalParams& f) noexcept 
             case 4: return a2 * k;
             case 5: return b2 * k;
             case 6: return std::sqrt(dist2) * k;
-            case 7: return k >= 1.0 ? double(unsigned(n) % unsigned(k)) / k : 0.0;  // POV-Ray divides by zero below 1
-            case 8: return k > 0.0 ? double(unsigned(n) % unsigned(1.0 + k)) / k : 0.0;
+            // POV-Ray's n % unsigned(k), in doubles: no conversion to overflow for a huge factor,
+            // and 0 where POV-Ray would divide by zero (k below 1).
+            case 7: return k >= 1.0 ? std::fmod(double(n), std::floor(k)) / k : 0.0;
+            case 8: return k > 0.0 ? std::fmod(double(n), std::floor(1.0 + k)) / k : 0.0;
             default: return 0.0;
             }
         }
