@@ -129,11 +129,11 @@ TEST_CASE("CSG children without an inside, skipped children and lights", "[dsl][
     CHECK(b.scene.objects().size() == 1);
     // A child photon cannot read yet: cut away, it is missing (warned where it is); deciding, the
     // whole CSG is skipped.
-    b = build_csg("difference { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
-    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:28 blob"});
+    b = build_csg("difference { box { -1, 1 } ovus { 1, 0.5 } }\n");
+    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:28 ovus"});
     CHECK(b.scene.objects().size() == 1);
-    b = build_csg("intersection { box { -1, 1 } blob { threshold 0.5 sphere { 0, 1, 1 } } }\n");
-    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:30 blob", "3:1 intersection"});
+    b = build_csg("intersection { box { -1, 1 } ovus { 1, 0.5 } }\n");
+    CHECK(places(b.warnings, "skipped object") == std::vector<std::string>{"3:30 ovus", "3:1 intersection"});
     CHECK(b.scene.objects().empty());
     b = build_csg("intersection { sphere { -3*x, 1 } sphere { 3*x, 1 } }\n");
     CHECK_THAT(all_messages(b.warnings), Contains("is empty (its objects do not overlap): nothing renders"));

@@ -55,11 +55,11 @@ TEST_CASE("objects photon has no shape for are skipped with a warning at their p
                                "cylinder { 0, y, 1 open }\n"
                                "sphere_sweep { linear_spline 2, <0, 0, 0>, 1, <1, 0, 0>, 1 }\n"
                                "difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
-                               "blob { threshold 0.5 sphere { 0, 1, 1 } cylinder { 0, y, 1, 1 } }\n"
+                               "bicubic_patch { type 0 <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>, <0,1,0>,<1,1,0>,<2,1,0>,<3,1,0>, <0,2,0>,<1,2,0>,<2,2,0>,<3,2,0>, <0,3,0>,<1,3,0>,<2,3,0>,<3,3,0> }\n"
                                "sphere { 0, 1 }\n"
                                "union { sphere { 0, 1 } julia_fractal { <0.4, 0.2, 0.3, -0.2> } }\n");
     CHECK(places(b.warnings, "skipped object") ==
-          std::vector<std::string>{"3:1 ovus", "5:1 sphere_sweep", "7:1 blob", "9:25 julia_fractal"});
+          std::vector<std::string>{"3:1 ovus", "5:1 sphere_sweep", "7:1 bicubic_patch", "9:25 julia_fractal"});
     CHECK_THAT(all_messages(b.warnings), Contains("`ovus` is skipped: photon has no ovus yet"));
     CHECK(b.objects == 4);  // the cylinder, the difference, the sphere and the union's sphere
     CHECK(b.lights == 1);
@@ -73,7 +73,7 @@ TEST_CASE("objects photon has no shape for are skipped with a warning at their p
 TEST_CASE("a skipped object is read with its syntax: errors inside are errors", "[dsl][degradation]") {
     CHECK_THAT(error_of("difference { }"), Contains("1:14: expected an object in `difference`"));
     CHECK_THAT(error_of("difference { box { 0, 1 } pigment { rgb 1 } blah }"), Contains("1:45: expected an object modifier"));
-    CHECK_THAT(error_of("blob { threshold 0.5 sphere { 0, 1, 1 }\n"), Contains("expected `}` to close `blob`"));
+    CHECK_THAT(error_of("lemon { 0, 1, 1, 0.5, 2\n"), Contains("expected `}` to close `lemon`"));
     CHECK_THAT(error_of("intersection { sphere { 0, -1 } box { 0, 1 } }"), Contains("sphere radius must be positive"));
 }
 

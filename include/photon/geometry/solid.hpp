@@ -7,7 +7,7 @@
 // The library's solids: Sphere, Box, Plane (the half-space below it, as POV-Ray's plane),
 // Cylinder and TruncatedCone (the closed solid, also when `open`: POV-Ray's inside test ignores
 // `open`, so an open one in CSG shows no end caps where they would bound the result), Torus,
-// Quadric, Prism, PolynomialSurface, Superellipsoid, Lathe, Sor, HeightField, Csg itself, and
+// Quadric, Prism, PolynomialSurface, Superellipsoid, Lathe, Sor, HeightField, Blob, Csg itself, and
 // Transformed<P> of a solid. Not solids: Triangle and Disc (no inside) and TriangleMesh (its
 // winding need not be closed or consistent; POV-Ray needs an `inside_vector` to decide).
 

@@ -17,6 +17,7 @@
 #include "../geometry/csg.hpp"
 #include "../geometry/cylinder.hpp"
 #include "../geometry/disc.hpp"
+#include "../geometry/blob.hpp"
 #include "../geometry/lathe.hpp"
 #include "../geometry/height_field.hpp"
 #include "../geometry/plane.hpp"
@@ -82,6 +83,7 @@ template <class Shape> [[nodiscard]] std::string shape_name(const Shape& shape) 
     else if constexpr (std::is_same_v<Shape, Lathe<S>>) return "lathe";
     else if constexpr (std::is_same_v<Shape, Sor<S>>) return shape.open() ? "open sor" : "sor";
     else if constexpr (std::is_same_v<Shape, HeightField<S>>) return "height field";
+    else if constexpr (std::is_same_v<Shape, Blob<S>>) return "blob";
     else return "object";
 }
 

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "../geometry/blob.hpp"
 #include "../geometry/bounding_ball.hpp"
 #include "../geometry/box.hpp"
 #include "../geometry/bvh.hpp"
@@ -253,7 +254,7 @@ using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCon
                        Transformed<Box<S>>, Transformed<Cylinder<S>>, Transformed<TruncatedCone<S>>,
                        Transformed<Torus<S>>, Quadric<S>, Transformed<Prism<S>>,
                        Transformed<PolynomialSurface<S>>, Transformed<Superellipsoid<S>>, Transformed<Lathe<S>>,
-                       Transformed<Sor<S>>, Transformed<HeightField<S>>>;
+                       Transformed<Sor<S>>, Transformed<HeightField<S>>, Transformed<Blob<S>>>;
 
 /// The shapes the scene language builds; user programs may list their own instead. A cylinder,
 /// cone or disc under a similarity (rotation, uniform scale, translation) is placed as the shape
@@ -265,14 +266,15 @@ using DefaultCsg = Csg<S, Sphere<S>, Box<S>, Plane<S>, Cylinder<S>, TruncatedCon
 /// text, a prism along z) is always Transformed, as the torus, and so is a polynomial surface
 /// (its transformation is not folded into its coefficients); so are a superellipsoid, a lathe and
 /// a sor (each lies at the origin, around or along the y axis).
-/// A height field is always Transformed too (it lies over the unit square).
+/// A height field is always Transformed too (it lies over the unit square), and a blob (its
+/// components keep their own transforms; the blob's is applied to the ray once).
 template <Scalar S>
 using DefaultScene =
     Scene<S, Sphere<S>, Plane<S>, Box<S>, Triangle<S>, TriangleMesh<S>, Cylinder<S>, TruncatedCone<S>, Disc<S>,
           Transformed<Sphere<S>>, Transformed<Box<S>>, Transformed<TruncatedCone<S>>, Transformed<Disc<S>>,
           Transformed<Torus<S>>, DefaultCsg<S>, Quadric<S>, Polygon<S>, Transformed<Prism<S>>,
           Transformed<PolynomialSurface<S>>, Transformed<Superellipsoid<S>>, Transformed<Lathe<S>>, Transformed<Sor<S>>,
-          Transformed<HeightField<S>>>;
+          Transformed<HeightField<S>>, Transformed<Blob<S>>>;
 
 template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhConfig config) {
     std::vector<BBox<S>> boxes;

@@ -441,6 +441,18 @@ struct SorShape {
     std::shared_ptr<const std::vector<glm::dvec2>> points;
     bool open = false;
 };
+/// `blob { ... }` (parser/blob.hpp): POV-Ray's components, each with its own transformation,
+/// and the threshold the summed field must exceed (build/blob_of.hpp makes the library's Blob).
+struct BlobShape {
+    struct Component {
+        bool cylinder = false;
+        Vector3 a{0.0}, b{0.0};  ///< the sphere's centre, or the cylinder's ends
+        double radius = 1, strength = 1;
+        Transform transform;  ///< the component's own, inside the blob
+    };
+    std::shared_ptr<const std::vector<Component>> components;
+    double threshold = 1;
+};
 /// A TrueType font named in a text object, found by the parser (beside the scene, then on the
 /// include path) and read by the build step (font_files.hpp), as mesh files are.
 struct FontFile {
@@ -500,7 +512,7 @@ struct SkippedShape {
 using Shape = std::variant<SphereShape, BoxShape, PlaneShape, TriangleShape, MeshShape, UnionShape, LightSource,
                            SkippedShape, CsgShape, CylinderShape, ConeShape, DiscShape, TorusShape, QuadricShape,
                            PolygonShape, PrismShape, TextShape, PolynomialShape, SuperellipsoidShape, LatheShape,
-                           SorShape, HeightFieldShape>;
+                           SorShape, HeightFieldShape, BlobShape>;
 
 /// One object statement with its modifiers. Modifiers missing here come from the enclosing
 /// union (texture, interior, photons) when there is one.
@@ -547,7 +559,7 @@ struct Object {
     constexpr const char* names[] = {"sphere",       "box", "plane", "triangle", "mesh", "union",
                                      "light_source", "",    "",      "cylinder", "cone", "disc", "torus",
                                      "quadric",      "polygon", "prism", "text", "poly", "superellipsoid", "lathe", "sor",
-                                     "height_field"};
+                                     "height_field", "blob"};
     static_assert(std::size(names) == std::variant_size_v<Shape>, "a keyword for every shape");
     if (const auto* skipped = std::get_if<SkippedShape>(&s)) return skipped->keyword.c_str();
     if (const auto* csg = std::get_if<CsgShape>(&s)) return keyword(csg->operation);

@@ -536,6 +536,15 @@ private:
             out_ << "sor { " << so->points->size();
             for (const glm::dvec2& point : *so->points) out_ << ", <" << num(point.x) << ", " << num(point.y) << ">";
             out_ << (so->open ? " open" : "") << '\n';
+        } else if (const auto* bl = std::get_if<BlobShape>(&o.shape)) {
+            out_ << "blob { threshold " << num(bl->threshold);
+            for (const BlobShape::Component& c : *bl->components) {
+                out_ << (c.cylinder ? " cylinder { " + vec(c.a) + ", " + vec(c.b) : " sphere { " + vec(c.a)) << ", "
+                     << num(c.radius) << ", " << num(c.strength);
+                placement_matrix(c.transform);
+                out_ << " }";
+            }
+            out_ << '\n';
         } else if (const auto* hf = std::get_if<HeightFieldShape>(&o.shape)) {
             out_ << "height_field { " << hf->file.type << ' ' << quoted(hf->file.path.string());
             if (hf->file.gamma) out_ << " gamma " << (*hf->file.gamma == 0 ? std::string("srgb") : num(*hf->file.gamma));

@@ -67,6 +67,7 @@ namespace photon::dsl {
 #include "parser/prism.hpp"
 #include "parser/polynomials.hpp"
 #include "parser/revolved.hpp"
+#include "parser/blob.hpp"
 #include "parser/lights_camera.hpp"
 #include "parser/settings.hpp"
 #include "parser/sky.hpp"

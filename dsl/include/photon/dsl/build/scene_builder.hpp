@@ -368,10 +368,10 @@ private:
         place(p, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
     }
-    template <class Revolved>
-        requires(std::is_same_v<Revolved, SuperellipsoidShape> || std::is_same_v<Revolved, LatheShape> ||
-                 std::is_same_v<Revolved, SorShape>)
-    std::optional<DefaultCsg<S>> csg_leaf(const Revolved& r, const Transform& t) {
+    template <class AlwaysTransformed>
+        requires(std::is_same_v<AlwaysTransformed, SuperellipsoidShape> || std::is_same_v<AlwaysTransformed, LatheShape> ||
+                 std::is_same_v<AlwaysTransformed, SorShape> || std::is_same_v<AlwaysTransformed, BlobShape>)
+    std::optional<DefaultCsg<S>> csg_leaf(const AlwaysTransformed& r, const Transform& t) {
         std::optional<DefaultCsg<S>> leaf;
         place(r, t, [&](auto shape) { leaf.emplace(std::move(shape)); });
         return leaf;
@@ -400,7 +400,7 @@ private:
                std::is_same_v<Shape, QuadricShape> || std::is_same_v<Shape, PrismShape> || std::is_same_v<Shape, TextShape> ||
                std::is_same_v<Shape, PolynomialShape> || std::is_same_v<Shape, SuperellipsoidShape> ||
                std::is_same_v<Shape, LatheShape> || std::is_same_v<Shape, SorShape> ||
-               std::is_same_v<Shape, HeightFieldShape>;
+               std::is_same_v<Shape, HeightFieldShape> || std::is_same_v<Shape, BlobShape>;
     }
 
     // Shapes ---------------------------------------------------------------------------------
@@ -473,10 +473,10 @@ private:
     void add_shape(const PolynomialShape& p, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(p, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
-    template <class Revolved>
-        requires(std::is_same_v<Revolved, SuperellipsoidShape> || std::is_same_v<Revolved, LatheShape> ||
-                 std::is_same_v<Revolved, SorShape>)
-    void add_shape(const Revolved& g, const Transform& t, MaterialId m, ObjectOptions opt) {
+    template <class AlwaysTransformed>
+        requires(std::is_same_v<AlwaysTransformed, SuperellipsoidShape> || std::is_same_v<AlwaysTransformed, LatheShape> ||
+                 std::is_same_v<AlwaysTransformed, SorShape> || std::is_same_v<AlwaysTransformed, BlobShape>)
+    void add_shape(const AlwaysTransformed& g, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(g, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
     }
     void add_shape(const TextShape& text, const Transform& t, MaterialId m, ObjectOptions opt) {

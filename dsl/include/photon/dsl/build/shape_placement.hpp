@@ -4,7 +4,7 @@
 // library's own shape where the transformation allows (a sphere under a similarity, a box whose
 // axes stay axes, a cylinder, cone or disc under a similarity), wrapped in Transformed otherwise,
 // always Transformed for the shapes that lie at the origin (torus, prism, text, polynomial,
-// superellipsoid, lathe, sor, height field). Fonts and images are read through the builder's
+// superellipsoid, lathe, sor, height field, blob). Fonts and images are read through the builder's
 // caches.
 
 #include <cmath>
@@ -21,16 +21,9 @@
 #include "../description.hpp"
 #include "../font_files.hpp"
 #include "../image_files.hpp"
+#include "library_shape.hpp"
 
 namespace photon::dsl::detail {
-
-template <Scalar S>
-Affine<S> to_affine(const Transform& t) {
-    Affine<S> a;
-    a.linear = glm::mat<3, 3, S, glm::defaultp>(t.linear);
-    a.translation = Vec3<S>(t.translation);
-    return a;
-}
 
 /// Rotation times uniform scale: returns the scale, or nothing.
 inline std::optional<double> similarity_scale(const glm::dmat3& m) {
@@ -133,6 +126,10 @@ public:
     }
     template <class F> void place(const SorShape& g, const Transform& t, F&& f) {
         f(Transformed<Sor<S>>(Sor<S>(*g.points, g.open), to_affine<S>(t)));
+    }
+    /// A blob placed: always Transformed (its components keep their own transformations).
+    template <class F> void place(const BlobShape& g, const Transform& t, F&& f) {
+        f(Transformed<Blob<S>>(blob_of<S>(g), to_affine<S>(t)));
     }
     /// Text placed: its glyphs' outlines (font_files.hpp) as one prism, turned to run from z = 0
     /// to z = thickness (y and z swapped: the outline's v is y). One prism for all glyphs fills

@@ -78,9 +78,9 @@ inline constexpr std::string_view object_keywords[] = {
     "sphere", "box",          "plane",       "triangle",   "smooth_triangle", "mesh",        "mesh2",
     "union",  "merge",        "difference",  "intersection", "object",        "light_source", "light_group",
     "cylinder", "cone",       "disc",        "torus",      "quadric",         "polygon",
-    "prism", "text", "quartic", "cubic", "poly", "polynomial", "superellipsoid", "lathe", "sor", "height_field"};
+    "prism", "text", "quartic", "cubic", "poly", "polynomial", "superellipsoid", "lathe", "sor", "height_field", "blob"};
 inline constexpr std::string_view unsupported_objects[] = {
-    "blob",       "isosurface",
+    "isosurface",
     "julia_fractal", "parametric",     "sphere_sweep",
     "bicubic_patch",  "ovus",       "lemon"};
 /// Blend maps: declarable, and read in patterned pigments and textures (parser/patterns.hpp).
@@ -91,7 +91,7 @@ inline constexpr std::string_view statement_keywords[] = {
     "smooth_triangle", "mesh",         "union",           "merge",      "difference", "intersection", "object",
     "cylinder",        "cone",         "disc",            "torus",      "quadric",    "polygon",
     "prism",           "text",         "quartic",         "cubic",      "poly",       "polynomial",
-    "superellipsoid",  "lathe",        "sor",             "height_field"};
+    "superellipsoid",  "lathe",        "sor",             "height_field", "blob"};
 inline constexpr std::string_view color_keywords[] = {"color", "colour", "rgb",  "rgbf",   "rgbt",    "rgbft",
                                                       "red",   "green",  "blue", "filter", "transmit"};
 inline constexpr std::string_view constants[] = {

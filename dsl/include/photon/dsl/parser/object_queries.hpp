@@ -10,6 +10,7 @@
 #include <photon/geometry/sor.hpp>
 #include <photon/geometry/superellipsoid.hpp>
 
+#include "../build/library_shape.hpp"
 #include "parser_class.hpp"
 
 namespace photon::dsl::detail {
@@ -127,6 +128,8 @@ inline Numeric Parser::parse_object_query(const Token& f) {
                 return Lathe<double>(profile).contains(p);
             } else if constexpr (std::is_same_v<S, SorShape>) {  // the closed solid, also when open (POV-Ray)
                 return Sor<double>(*s.points).contains(p);
+            } else if constexpr (std::is_same_v<S, BlobShape>) {  // POV-Ray's Inside_Blob: the field above the threshold
+                return blob_of<double>(s).contains(p);
             } else if constexpr (std::is_same_v<S, UnionShape>) {
                 for (const auto& child : s.children)
                     if (object_contains(*child, p)) return true;

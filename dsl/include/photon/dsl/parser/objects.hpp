@@ -76,6 +76,8 @@ inline Object Parser::parse_object(const Token& kw) {
         parse_lathe(obj);
     } else if (w == "sor") {
         parse_sor(obj);
+    } else if (w == "blob") {
+        parse_blob(kw, obj);
     } else if (w == "height_field") {
         parse_height_field(kw, obj);
     } else if (w == "triangle" || w == "smooth_triangle") {

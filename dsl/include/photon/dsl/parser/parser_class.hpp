@@ -334,6 +334,8 @@ private:
     void parse_superellipsoid(Object& obj);
     void parse_lathe(Object& obj);
     void parse_sor(Object& obj);
+    // blob.hpp
+    void parse_blob(const Token& kw, Object& obj);
 
     // degradation.hpp
     void degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
