@@ -5,7 +5,7 @@
 # set_regions SCENE sets the array region_args.
 set_regions() {
   case "$1" in
-    cornell | recursive | textures | patterns)  # patterns.pov and textures.pov are the Cornell box too
+    cornell | recursive | textures | patterns | blobs)  # patterns.pov, textures.pov and blobs.pov are the Cornell box too
       region_args=(--region "floor=-1.2,-0.001,-1.2,1.2,0.001,1.2,+y"
         --region "ceiling=-1.2,1.799,-1.2,1.2,1.801,1.2,-y"
         --region "back wall=-1.2,0,1.199,1.2,1.8,1.201,-z"

@@ -104,3 +104,20 @@ TEST_CASE("blob: export-pov writes what reads back the same", "[dsl][blob][expor
     const std::string twice = dsl::export_pov(dsl::parse_string(exported, "exported.pov"));
     CHECK(twice.substr(twice.find('\n')) == exported.substr(exported.find('\n')));
 }
+
+TEST_CASE("examples/scenes/blobs.pov reads and builds with no warning, and exports back the same", "[dsl][blob][scenes]") {
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    const auto desc = dsl::parse_file(std::string(PHOTON_SCENES_DIR) + "/blobs.pov", po);
+    const auto built = dsl::build<float>(desc, bo);
+    CHECK(all_messages(warnings).empty());
+    int blobs = 0;
+    for (const auto& o : built.scene.objects()) blobs += std::holds_alternative<Transformed<Blob<float>>>(o.shape);
+    CHECK(blobs == 4);
+    const std::string exported = dsl::export_pov(desc);
+    const std::string twice = dsl::export_pov(dsl::parse_string(exported, "exported.pov"));
+    CHECK(twice.substr(twice.find('\n')) == exported.substr(exported.find('\n')));
+}
