@@ -538,10 +538,10 @@ private:
             out_ << (so->open ? " open" : "") << '\n';
         } else if (const auto* bl = std::get_if<BlobShape>(&o.shape)) {
             out_ << "blob { threshold " << num(bl->threshold);
-            for (const BlobShape::Component& c : *bl->components) {
-                out_ << (c.cylinder ? " cylinder { " + vec(c.a) + ", " + vec(c.b) : " sphere { " + vec(c.a)) << ", "
-                     << num(c.radius) << ", " << num(c.strength);
-                placement_matrix(c.transform);
+            for (const BlobShape::Component& part : *bl->components) {
+                out_ << (part.cylinder ? " cylinder { " + vec(part.a) + ", " + vec(part.b) : " sphere { " + vec(part.a)) << ", "
+                     << num(part.radius) << ", " << num(part.strength);
+                placement_matrix(part.transform);
                 out_ << " }";
             }
             out_ << '\n';
