@@ -7,6 +7,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <photon/geometry/blob.hpp>
 #include <photon/geometry/cylinder.hpp>
 #include <photon/geometry/lathe.hpp>
 #include <photon/geometry/height_field.hpp>
@@ -175,6 +176,25 @@ template <class S> void lathe_vase(benchmark::State& s) {  // two cubic Beziers
 template <class S> void sor_vase(benchmark::State& s) {  // 4 cubic segments, closed
     run(s, Sor<S>({{0.2, -1.2}, {0.8, -1}, {1, -0.5}, {0.5, 0}, {0.4, 0.5}, {0.6, 1}, {0.7, 1.2}}));
 }
+template <class S> void blob_ball(benchmark::State& s) {  // one sphere component: the unit sphere
+    using C = typename Blob<S>::Component;
+    run(s, Blob<S>({C::sphere(Vec3<S>(0), S(1) / S(std::sqrt(1 - std::sqrt(0.5))), 1)}, S(0.5)));
+}
+template <class S> void blob_crossed_rods(benchmark::State& s) {  // POV-Ray's blob1a, scaled to radius ~1
+    using C = typename Blob<S>::Component;
+    run(s, Blob<S>({C::cylinder({-1, 0, 0}, {1, 0, 0}, S(0.57), 2), C::cylinder({0, 0, -1}, {0, 0, 1}, S(0.57), 2),
+                    C::sphere({0, S(0.43), 0}, S(0.36), -4)},
+                   S(0.5)));
+}
+template <class S> void blob_ten_balls(benchmark::State& s) {  // ten sphere components in a ring
+    using C = typename Blob<S>::Component;
+    std::vector<C> balls;
+    for (int i = 0; i < 10; ++i) {
+        const double a = 2 * 3.14159265358979 * i / 10;
+        balls.push_back(C::sphere(Vec3<S>(S(0.7 * std::cos(a)), 0, S(0.7 * std::sin(a))), S(0.45), 1));
+    }
+    run(s, Blob<S>(std::move(balls), S(0.4)));
+}
 /// Rolling hills on a 256 x 256 grid, heights in [0, 1].
 std::vector<double> hills(unsigned n) {
     std::vector<double> h(std::size_t(n) * n);
@@ -237,6 +257,9 @@ PHOTON_SHAPE_BENCH(superellipsoid_star);
 PHOTON_SHAPE_BENCH(lathe_cylinder);
 PHOTON_SHAPE_BENCH(lathe_vase);
 PHOTON_SHAPE_BENCH(sor_vase);
+PHOTON_SHAPE_BENCH(blob_ball);
+PHOTON_SHAPE_BENCH(blob_crossed_rods);
+PHOTON_SHAPE_BENCH(blob_ten_balls);
 PHOTON_SHAPE_BENCH(height_field_256);
 PHOTON_SHAPE_BENCH(height_field_256_smooth);
 PHOTON_SHAPE_BENCH(height_field_as_mesh);
