@@ -9,6 +9,7 @@
 #include "film_compare.hpp"
 
 #include <barrier>
+#include <cmath>
 #include <photon/photon.hpp>
 #include <thread>
 
@@ -138,5 +139,50 @@ TEST_CASE("ranks sharing an adaptive render give the one-process image and sampl
                 CHECK(r.stats.pixel_samples.most == one.stats.pixel_samples.most);
             }
         }
+    }
+}
+
+TEST_CASE("the hashed deal evens out a cost that follows the interleave, and its lists come back whole", "[render]") {
+    // Units of a row of even width whose dear ones are every second (the irradiance cache's last
+    // level): round-robin gives every dear unit to rank 0 of 2, the hash about half to each.
+    constexpr std::size_t units = 10'000;
+    for (unsigned ranks : {2u, 3u}) {
+        ThreadRanks all(ranks);
+        std::vector<std::size_t> dear_interleaved(ranks), dear_hashed(ranks);
+        for (unsigned r = 0; r < ranks; ++r) {
+            const ThreadRanks::Share share(all, r);
+            for (std::size_t u = 0; u < units; u += 2) {
+                dear_interleaved[r] += owns(&share, u);
+                dear_hashed[r] += owns(&share, u, Deal::hashed);
+            }
+        }
+        std::size_t total = 0;
+        for (unsigned r = 0; r < ranks; ++r) {
+            INFO(ranks << " ranks, rank " << r);
+            total += dear_hashed[r];
+            CHECK(std::abs(double(dear_hashed[r]) * ranks / (units / 2) - 1.0) < 0.05);
+        }
+        CHECK(total == units / 2);  // every unit has exactly one owner
+        if (ranks == 2) CHECK(dear_interleaved[0] == units / 2);
+    }
+    // Each rank fills the lists it owns under the hash; share_lists puts every list back in place.
+    for (unsigned ranks : {2u, 3u}) {
+        ThreadRanks all(ranks);
+        std::vector<std::vector<std::vector<int>>> lists(ranks, std::vector<std::vector<int>>(101));
+        {
+            std::vector<std::jthread> threads;
+            for (unsigned r = 0; r < ranks; ++r)
+                threads.emplace_back([&, r] {
+                    ThreadRanks::Share share(all, r);
+                    for (std::size_t u = 0; u < lists[r].size(); ++u)
+                        if (owns(&share, u, Deal::hashed)) lists[r][u].assign(u % 4, int(u));  // some empty
+                    share_lists(&share, lists[r], "test", Deal::hashed);
+                });
+        }
+        for (unsigned r = 0; r < ranks; ++r)
+            for (std::size_t u = 0; u < lists[r].size(); ++u) {
+                INFO(ranks << " ranks, rank " << r << ", unit " << u);
+                CHECK(lists[r][u] == std::vector<int>(u % 4, int(u)));
+            }
     }
 }

@@ -59,7 +59,7 @@ template <class SceneT>
             ShadingContext ctx;
             std::vector<GatherSample<S>> samples;
             for (std::size_t i = b; i < e; ++i) {
-                if (!owns(settings.share, i)) continue;  // another rank's
+                if (!owns(settings.share, i, Deal::hashed)) continue;  // another rank's
                 const unsigned px = unsigned(i % cols) * spacing + spacing / 2, py = unsigned(i / cols) * spacing + spacing / 2;
                 if (px >= settings.width || py >= settings.height) continue;
                 ctx.rng = Pcg32(settings.seed ^ (0x70726574ULL + spacing), std::uint64_t(py) * settings.width + px);
@@ -85,7 +85,7 @@ template <class SceneT>
             const std::lock_guard lock(merge);
             stats.rays += ctx.rays;
         });
-        share_lists(settings.share, found, "irradiance cache");  // every rank sees every record
+        share_lists(settings.share, found, "irradiance cache", Deal::hashed);  // every rank sees every record
         for (auto& list : found) records.insert(records.end(), list.begin(), list.end());
         // Not after the last level: the radii it would shrink there leave holes that no level
         // fills, and every image sample landing in one gathers in full (room 1 at 320 x 240:

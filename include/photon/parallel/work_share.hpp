@@ -35,10 +35,33 @@ public:
 /// Whether `share` is absent or a single process: nothing to split.
 [[nodiscard]] inline bool single(const WorkShare* share) noexcept { return !share || share->ranks() <= 1; }
 
-/// Whether unit `unit` is this rank's: units are dealt round-robin (an interleave: neighbouring
-/// rows or blocks cost about the same, so each rank gets an even share of cheap and dear ones).
-[[nodiscard]] inline bool owns(const WorkShare* share, std::size_t unit) noexcept {
-    return single(share) || unit % share->ranks() == share->rank();
+/// How units are dealt to the ranks.
+enum class Deal {
+    /// Round-robin, unit u to rank u mod N: neighbouring rows or blocks cost about the same, so
+    /// each rank gets an even share of cheap and dear ones.
+    interleaved,
+    /// By a hash of the unit: for units whose cost follows a lattice that an interleave would
+    /// line up with. The irradiance cache's last level is one: its pixels in odd rows and columns
+    /// are the level before's samples and need no gather, so round-robin over rows of even width
+    /// (even columns to rank 0) gave rank 0 2,376 gathers and rank 1 1,718 (room 1, 400 x 300).
+    hashed,
+};
+
+/// The rank that computes unit `unit` under `deal`.
+[[nodiscard]] inline unsigned owner(const WorkShare* share, std::size_t unit, Deal deal = Deal::interleaved) noexcept {
+    if (single(share)) return 0;
+    std::uint64_t key = unit;
+    if (deal == Deal::hashed) {  // the SplitMix64 finaliser: every bit of the unit moves every bit
+        key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
+        key ^= key >> 31;
+    }
+    return unsigned(key % share->ranks());
+}
+
+/// Whether unit `unit` is this rank's under `deal`.
+[[nodiscard]] inline bool owns(const WorkShare* share, std::size_t unit, Deal deal = Deal::interleaved) noexcept {
+    return single(share) || owner(share, unit, deal) == share->rank();
 }
 
 /// How many of units [0, units) are this rank's (for progress reports).
@@ -64,13 +87,16 @@ template <class T> [[nodiscard]] T read_one(const std::vector<std::byte>& in, st
 
 }  // namespace detail
 
-/// Per-unit lists (unit u computed by the rank that owns it, empty elsewhere) made whole on every
-/// rank: each rank sends its units' sizes and items, and every rank puts them back at their units.
+/// Per-unit lists (unit u computed by the rank that owns it under `deal`, empty elsewhere) made
+/// whole on every rank: each rank sends its units' sizes and items, and every rank puts them back
+/// at their units.
 template <class T>
-void share_lists(WorkShare* share, std::vector<std::vector<T>>& lists, const char* phase) {
+void share_lists(WorkShare* share, std::vector<std::vector<T>>& lists, const char* phase,
+                 Deal deal = Deal::interleaved) {
     if (single(share)) return;
     std::vector<std::byte> mine;
-    for (std::size_t u = share->rank(); u < lists.size(); u += share->ranks()) {
+    for (std::size_t u = 0; u < lists.size(); ++u) {
+        if (!owns(share, u, deal)) continue;
         const std::uint64_t n = lists[u].size();
         detail::append_bytes(mine, std::span<const std::uint64_t>(&n, 1));
         detail::append_bytes(mine, std::span<const T>(lists[u]));
@@ -79,7 +105,8 @@ void share_lists(WorkShare* share, std::vector<std::vector<T>>& lists, const cha
     for (unsigned r = 0; r < share->ranks(); ++r) {
         if (r == share->rank()) continue;
         std::size_t at = 0;
-        for (std::size_t u = r; u < lists.size(); u += share->ranks()) {
+        for (std::size_t u = 0; u < lists.size(); ++u) {
+            if (owner(share, u, deal) != r) continue;
             const auto n = detail::read_one<std::uint64_t>(all[r], at);
             lists[u].resize(n);
             if (n == 0) continue;  // an empty list's data() may be null, which memcpy must not see
