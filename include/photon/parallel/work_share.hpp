@@ -16,6 +16,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "../math/rng.hpp"
+
 namespace photon {
 
 class WorkShare {
@@ -50,12 +52,7 @@ enum class Deal {
 /// The rank that computes unit `unit` under `deal`.
 [[nodiscard]] inline unsigned owner(const WorkShare* share, std::size_t unit, Deal deal = Deal::interleaved) noexcept {
     if (single(share)) return 0;
-    std::uint64_t key = unit;
-    if (deal == Deal::hashed) {  // the SplitMix64 finaliser: every bit of the unit moves every bit
-        key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
-        key ^= key >> 31;
-    }
+    const std::uint64_t key = deal == Deal::hashed ? mix64(unit) : unit;
     return unsigned(key % share->ranks());
 }
 
@@ -102,17 +99,15 @@ void share_lists(WorkShare* share, std::vector<std::vector<T>>& lists, const cha
         detail::append_bytes(mine, std::span<const T>(lists[u]));
     }
     const auto all = share->all_gather(mine, phase);
-    for (unsigned r = 0; r < share->ranks(); ++r) {
+    std::vector<std::size_t> at(share->ranks(), 0);  // read position in each rank's bytes
+    for (std::size_t u = 0; u < lists.size(); ++u) {
+        const unsigned r = owner(share, u, deal);
         if (r == share->rank()) continue;
-        std::size_t at = 0;
-        for (std::size_t u = 0; u < lists.size(); ++u) {
-            if (owner(share, u, deal) != r) continue;
-            const auto n = detail::read_one<std::uint64_t>(all[r], at);
-            lists[u].resize(n);
-            if (n == 0) continue;  // an empty list's data() may be null, which memcpy must not see
-            std::memcpy(lists[u].data(), all[r].data() + at, n * sizeof(T));
-            at += n * sizeof(T);
-        }
+        const auto n = detail::read_one<std::uint64_t>(all[r], at[r]);
+        lists[u].resize(n);
+        if (n == 0) continue;  // an empty list's data() may be null, which memcpy must not see
+        std::memcpy(lists[u].data(), all[r].data() + at[r], n * sizeof(T));
+        at[r] += n * sizeof(T);
     }
 }
 
