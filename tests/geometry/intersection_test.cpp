@@ -199,7 +199,7 @@ TEST_CASE("BVH of coincident boxes stays shallow", "[geometry]") {
     CHECK(tested == boxes.size());
 }
 
-// The float build runs in SSE (geometry/bvh_build.hpp) and loads representative points only when
+// The float build runs in SSE (geometry/bvh_build_sse.hpp) and loads representative points only when
 // they are not the boxes' centres; double runs the scalar build. Both must index every box:
 // overlap queries against brute force, over nodes large enough for the build's two sets of bins.
 TEMPLATE_TEST_CASE("BVH with representative points other than box centres finds every overlapping box",

@@ -115,7 +115,7 @@ private:
     BinaryNodes build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                          BvhConfig config);
 #if PHOTON_BVH_SSE
-    /// The same build for float in SSE (see bvh_build.hpp); BoxCentres: every centre is its box's.
+    /// The same build for float in SSE (see bvh_build_sse.hpp); BoxCentres: every centre is its box's.
     template <bool BoxCentres>
     BinaryNodes build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                              BvhConfig config);
@@ -327,4 +327,5 @@ void Bvh<S>::for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const {
 
 }  // namespace photon
 
-#include "bvh_build.hpp"  // the build: Bvh's constructor, build_binary, collapse
+#include "bvh_build.hpp"      // the build: Bvh's constructor, build_binary, collapse
+#include "bvh_build_sse.hpp"  // build_binary_sse
