@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // photon::TriangleMesh (its BVH) against Embree 3 on the same million-triangle mesh and the same
-// rays, single-threaded, one ray at a time: build time, memory, and closest-hit and any-hit
-// throughput for coherent primary rays and incoherent random rays. Before timing, both must
+// rays, single-threaded, one ray at a time: build time (on one thread, and on all cores), memory,
+// and closest-hit and any-hit throughput for coherent primary rays and incoherent random rays. Before timing, both must
 // agree on every checked ray (hit or miss, and t), or the run stops.
 //
 //   mesh_bench [--quick] [--photon_leaf=<n>] [--photon_bins=<n>] [--photon_cost=<x>] [google benchmark flags]
@@ -19,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "mesh_bench_data.hpp"
@@ -31,21 +32,23 @@ using photon::Vec3;
 using Mesh = photon::TriangleMesh<float>;
 
 int grid_n = 289;  // 12 n^2 triangles: 1,002,252
-photon::BvhConfig photon_config;
+photon::BvhConfig photon_config{.threads = 1};  // build-all-cores/photon sets 0
 constexpr int image_res = 1024;                     // primary rays: 1M
 constexpr std::size_t random_count = std::size_t(1) << 20;
 constexpr std::size_t check_count = std::size_t(1) << 18;  // rays per set compared before timing
 
 // ---- Embree -----------------------------------------------------------------------------------
 
-/// One Embree device with a single build thread and a memory monitor (net bytes allocated).
+/// One Embree device with `threads` build threads (0: all cores) and a memory monitor (net bytes
+/// allocated).
 struct EmbreeDevice {
     RTCDevice device = nullptr;
     long long bytes = 0;
-    EmbreeDevice() {
+    explicit EmbreeDevice(int threads) {
         // EMBREE_CONFIG adds to the configuration, e.g. EMBREE_CONFIG=hugepages=1.
         const char* extra = std::getenv("EMBREE_CONFIG");
-        const std::string config = std::string("threads=1") + (extra ? std::string(",") + extra : std::string());
+        const std::string config =
+            "threads=" + std::to_string(threads) + (extra ? std::string(",") + extra : std::string());
         device = rtcNewDevice(config.c_str());
         if (!device) {
             std::fprintf(stderr, "embree: rtcNewDevice failed (%d)\n", int(rtcGetDeviceError(nullptr)));
@@ -131,7 +134,8 @@ struct World {
     // do not stop at the first box: half end just short of the surface, like shadow rays.
     std::vector<Ray<float>> shadow;
     std::unique_ptr<Mesh> mesh;
-    EmbreeDevice device;
+    EmbreeDevice device{1};
+    std::unique_ptr<EmbreeDevice> all_cores_device;  // made by the first all-cores build
     std::map<int, std::unique_ptr<EmbreeScene>> embree;  // by RTCBuildQuality
 
     World() : data(photon::bench::displaced_sphere(grid_n)) {
@@ -260,16 +264,24 @@ void trace(benchmark::State& state, const std::string& set, const std::string& i
     state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(batch));
 }
 
-void build(benchmark::State& state, const std::string& impl) {
+/// Builds on one thread, or on all cores (timed by the wall clock, UseRealTime).
+void build(benchmark::State& state, const std::string& impl, bool all_cores) {
     const auto& data = world().data;
     double bytes = 0;
+    photon::BvhConfig config = photon_config;
+    if (all_cores) config.threads = 0;
+    // Embree's all-cores device is made only for its own build: its idle worker threads would
+    // compete with photon's.
+    if (all_cores && impl != "photon" && !world().all_cores_device)
+        world().all_cores_device = std::make_unique<EmbreeDevice>(0);
+    EmbreeDevice& device = all_cores && impl != "photon" ? *world().all_cores_device : world().device;
     for (auto _ : state) {
         if (impl == "photon") {
-            const Mesh mesh(data.positions, data.triangles, photon_config);
+            const Mesh mesh(data.positions, data.triangles, config);
             bytes = double(mesh.memory_bytes());
             benchmark::DoNotOptimize(&mesh);
         } else {
-            const EmbreeScene es(world().device, data, quality_of(impl));
+            const EmbreeScene es(device, data, quality_of(impl));
             bytes = double(es.bytes);
         }
     }
@@ -287,6 +299,7 @@ public:
             if (run.error_occurred || run.run_type == Run::RT_Aggregate) continue;
             Result& r = results_[run.run_name.function_name];
             r.cpu_seconds = run.GetAdjustedCPUTime() * unit(run.time_unit);
+            r.real_seconds = run.GetAdjustedRealTime() * unit(run.time_unit);
             for (const auto& [key, counter] : run.counters) r.counters[key] = counter.value;
             if (run.counters.count("items_per_second")) r.rays_per_second = run.counters.at("items_per_second").value;
         }
@@ -309,12 +322,19 @@ public:
             if (const Result* r = find(std::string("build/") + impl))
                 std::printf("| %s | %.0f | %.1f | %.1f |\n", impl, r->cpu_seconds * 1e3, r->counters.at("B/tri"),
                             r->counters.at("MiB"));
+        const Result* p = find("build-all-cores/photon");
+        const Result* e = find("build-all-cores/embree");
+        if (p && e)
+            std::printf("\n| build on all %u cores | photon wall ms | Embree wall ms | photon / Embree |\n|---|---:|---:|---:|\n"
+                        "| default quality | %.0f | %.0f | %.2fx |\n",
+                        std::thread::hardware_concurrency(), p->real_seconds * 1e3, e->real_seconds * 1e3,
+                        p->real_seconds / e->real_seconds);
         std::fflush(stdout);
     }
 
 private:
     struct Result {
-        double cpu_seconds = 0, rays_per_second = 0;
+        double cpu_seconds = 0, real_seconds = 0, rays_per_second = 0;
         std::map<std::string, double> counters;
     };
     static double unit(benchmark::TimeUnit u) {
@@ -349,9 +369,16 @@ int main(int argc, char** argv) {
         else args.push_back(argv[i]);
     }
     for (const char* impl : {"photon", "embree", "embree-high"})
-        benchmark::RegisterBenchmark((std::string("build/") + impl).c_str(), [impl](benchmark::State& s) { build(s, impl); })
+        benchmark::RegisterBenchmark((std::string("build/") + impl).c_str(),
+                                     [impl](benchmark::State& s) { build(s, impl, false); })
             ->Unit(benchmark::kMillisecond)
             ->Iterations(impl == std::string("embree-high") ? 1 : 3);
+    for (const char* impl : {"photon", "embree"})
+        benchmark::RegisterBenchmark((std::string("build-all-cores/") + impl).c_str(),
+                                     [impl](benchmark::State& s) { build(s, impl, true); })
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(10)  // the wall clock moves more than CPU time on this shared machine
+            ->UseRealTime();
     for (const char* set : {"primary", "random", "shadow"})
         for (const char* impl : {"photon", "embree", "embree-high"})
             benchmark::RegisterBenchmark((std::string("trace/") + set + "/" + impl).c_str(),

@@ -27,8 +27,10 @@
 
 #if defined(__GNUC__) || defined(__clang__)
 #define PHOTON_FORCEINLINE inline __attribute__((always_inline))
+#define PHOTON_FORCEINLINE_LAMBDA __attribute__((always_inline))  // after a lambda's parameters
 #define PHOTON_RESTRICT __restrict__
 #else
 #define PHOTON_FORCEINLINE inline
+#define PHOTON_FORCEINLINE_LAMBDA
 #define PHOTON_RESTRICT
 #endif

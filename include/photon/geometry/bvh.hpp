@@ -13,10 +13,12 @@
 #include <numeric>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "../config.hpp"
 #include "../memory/huge_page_allocator.hpp"
+#include "../parallel/parallel_for.hpp"
 #include "bbox.hpp"
 #include "ray.hpp"
 
@@ -34,12 +36,15 @@ namespace photon {
 /// Build options. Costs are in units of one node visit.
 struct BvhConfig {
     unsigned max_leaf_size = 8;    ///< never more primitives per leaf than this, except identical centres
-    unsigned bins = 16;            ///< SAH bins per axis
+    unsigned bins = 16;            ///< SAH bins per axis of large nodes (see Bvh::node_bins)
     float intersection_cost = 1.0f;  ///< cost of one primitive test (one block's, see leaf_block) relative to a node visit
     /// Leaves start at multiples of this in primitive_indices(), padded with `padding` entries, so
     /// that a caller can store primitives in blocks tested together (TriangleMesh: 4 per SSE test).
     /// With 1, leaves are neither padded nor reordered.
     unsigned leaf_block = 1;
+    /// Build threads (0: all cores). Builds of fewer than 16,384 primitives use the calling thread
+    /// alone. The tree is the same for any count.
+    unsigned threads = 0;
 };
 
 /// BVH built as a binary tree by binned SAH (Wald 2007, "On fast Construction of SAH-based
@@ -66,6 +71,9 @@ public:
     Bvh() = default;
     /// Builds over `boxes[i]` with representative points `centers[i]` (usually box centres).
     Bvh(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers, BvhConfig config = {});
+    /// Builds over `boxes[i]` represented by their centres (meshes, scenes), without an array of
+    /// them.
+    explicit Bvh(std::span<const BBox<S>> boxes, BvhConfig config = {});
 
     [[nodiscard]] bool empty() const noexcept { return nodes_.empty(); }
     /// The wide nodes; nodes()[0] is the root.
@@ -101,8 +109,37 @@ private:
         std::uint32_t count = 0;  ///< primitives in a leaf; 0 marks an inner node
         [[nodiscard]] bool is_leaf() const noexcept { return count != 0; }
     };
-    // Reserved for 2n nodes, tens of MiB touched once: huge pages spare page faults.
-    using BinaryNodes = std::vector<BinaryNode, HugePageAllocator<BinaryNode>>;
+    /// The binary tree: room for the most nodes a build can write (4n: a parallel build gives its
+    /// top and each subtree a region of their own), allocated but never initialised as a whole,
+    /// so that only the pages written are touched (about a quarter), in huge pages.
+    class BinaryNodes {
+    public:
+        std::size_t count = 0;  ///< nodes in the tree (regions leave unused slots between them)
+
+        explicit BinaryNodes(std::size_t capacity)
+            : capacity_(capacity), nodes_(capacity > 0 ? HugePageAllocator<BinaryNode>().allocate(capacity) : nullptr) {}
+        BinaryNodes(BinaryNodes&& other) noexcept
+            : count(other.count), capacity_(std::exchange(other.capacity_, 0)),
+              nodes_(std::exchange(other.nodes_, nullptr)) {}
+        BinaryNodes& operator=(BinaryNodes&&) = delete;
+        ~BinaryNodes() {
+            if (nodes_) HugePageAllocator<BinaryNode>().deallocate(nodes_, capacity_);
+        }
+        [[nodiscard]] BinaryNode* data() const noexcept { return nodes_; }
+        [[nodiscard]] const BinaryNode& operator[](std::size_t i) const noexcept { return nodes_[i]; }
+
+    private:
+        std::size_t capacity_;
+        BinaryNode* nodes_;  // aggregates: writing one begins its lifetime
+    };
+    /// A region of a BinaryNodes array, its nodes numbered from its start.
+    struct NodeRegion {
+        BinaryNode* base;
+        std::uint32_t used = 0;
+        [[nodiscard]] BinaryNode& operator[](std::uint32_t i) const noexcept { return base[i]; }
+        [[nodiscard]] std::uint32_t size() const noexcept { return used; }
+        void push_back(const BinaryNode& node) noexcept { base[used++] = node; }
+    };
     struct Bin {
         BBox<S> bounds;
         std::uint32_t count = 0;
@@ -115,11 +152,16 @@ private:
     BinaryNodes build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                          BvhConfig config);
 #if PHOTON_BVH_SSE
-    /// The same build for float in SSE (see bvh_build_sse.hpp); BoxCentres: every centre is its box's.
+    /// The same build for float in SSE (see bvh_build_sse.hpp); BoxCentres: every centre is its
+    /// box's (`centers` may then be empty).
     template <bool BoxCentres>
     BinaryNodes build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Vec3<S>> centers,
                                              BvhConfig config);
 #endif
+    /// Drives a build's node splits from the root `nodes[0]` (see bvh_build.hpp); `make_split()`
+    /// gives a callable with its own scratch space that splits one node of a NodeRegion.
+    template <class Task, class MakeSplit>
+    void run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSplit make_split);
     void collapse(const BinaryNodes& binary, unsigned leaf_block);
     /// Starts loading both cache lines of a node the ray entered, so that the misses of sibling
     /// subtrees overlap instead of queueing one after another.
@@ -132,6 +174,11 @@ private:
 #endif
     }
 
+    /// SAH bins per axis for a node of `count` primitives: as Embree, 4 + count / 20 up to `most`
+    /// (config.bins), since the work per bin, not per primitive, dominates small nodes.
+    [[nodiscard]] static unsigned node_bins(std::uint32_t count, unsigned most) noexcept {
+        return std::min(most, 4 + count / 20);
+    }
     static constexpr std::uint32_t forced_median_depth = 64;
     // The binary depth stays below forced_median_depth + log2(2^32) + 1; each wide level
     // pushes at most width - 1 entries.

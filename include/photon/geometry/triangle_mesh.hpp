@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../memory/huge_page_allocator.hpp"
+#include "../parallel/parallel_for.hpp"
 #include "bvh.hpp"
 #include "triangle.hpp"
 #include "triangle4.hpp"
@@ -100,38 +101,40 @@ TriangleMesh<S>::TriangleMesh(std::vector<Vec3<S>> positions, std::vector<Index>
     : positions_(std::move(positions)), indices_(std::move(triangles)) {
     for (const Vec3<S>& p : positions_)
         if (!is_finite(p)) throw std::invalid_argument("mesh: vertex positions must be finite");
-    // 36 bytes a triangle, fresh pages at every build (glibc maps arrays this large anew): huge
-    // pages spare most of the page faults.
-    std::vector<BBox<S>, HugePageAllocator<BBox<S>>> boxes;
-    std::vector<Vec3<S>, HugePageAllocator<Vec3<S>>> centers;
-    boxes.reserve(indices_.size());
-    centers.reserve(indices_.size());
-    for (std::size_t t = 0; t < indices_.size(); ++t) {
-        const Index& idx = indices_[t];
-        for (std::uint32_t v : idx)
+    for (std::size_t t = 0; t < indices_.size(); ++t)
+        for (std::uint32_t v : indices_[t])
             if (v >= positions_.size())
                 throw std::invalid_argument("mesh: triangle " + std::to_string(t) + " refers to vertex " +
                                             std::to_string(v) + " of " + std::to_string(positions_.size()));
-        BBox<S> b = BBox<S>::of_point(positions_[idx[0]]);
-        b.extend(positions_[idx[1]]).extend(positions_[idx[2]]);
-        boxes.push_back(b);
-        centers.push_back(b.center());
-    }
+    // The loops below write by index, on the BVH build's threads. The boxes: 24 bytes a triangle,
+    // fresh pages at every build (glibc maps arrays this large anew), so huge pages spare most of
+    // the page faults.
+    constexpr std::size_t grain = 1 << 14;
+    std::vector<BBox<S>, HugePageAllocator<BBox<S>>> boxes(indices_.size());
+    parallel_for(indices_.size(), grain, config.threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t t = first; t < last; ++t) {
+            const Index& idx = indices_[t];
+            boxes[t] = BBox<S>::of_point(positions_[idx[0]]);
+            boxes[t].extend(positions_[idx[1]]).extend(positions_[idx[2]]);
+        }
+    });
     config.leaf_block = 4;
-    bvh_ = Bvh<S>(boxes, centers, config);
+    bvh_ = Bvh<S>(boxes, config);
     const auto ids = bvh_.primitive_indices();
     blocks_.resize(ids.size() / 4);
-    for (std::size_t i = 0; i < ids.size(); ++i) {
-        if (ids[i] == Bvh<S>::padding) continue;  // stays NaN
-        const Index& idx = indices_[ids[i]];
-        const Vec3<S>& v0 = positions_[idx[0]];
-        // A triangle without a normal (collinear or coincident vertices, or an area that
-        // underflows) stays NaN and is never hit. Its own vertices would not do, as rounding can
-        // make the determinant non-zero for exactly collinear vertices, and the hit would carry a
-        // NaN normal.
-        if (detail::triangle_normal(positions_[idx[1]] - v0, positions_[idx[2]] - v0) != Vec3<S>(S(0)))
-            blocks_[i / 4].set(int(i % 4), v0, positions_[idx[1]], positions_[idx[2]]);
-    }
+    parallel_for(blocks_.size(), grain / 4, config.threads, [&](std::size_t first, std::size_t last) {
+        for (std::size_t i = 4 * first; i < 4 * last; ++i) {
+            if (ids[i] == Bvh<S>::padding) continue;  // stays NaN
+            const Index& idx = indices_[ids[i]];
+            const Vec3<S>& v0 = positions_[idx[0]];
+            // A triangle without a normal (collinear or coincident vertices, or an area that
+            // underflows) stays NaN and is never hit. Its own vertices would not do, as rounding
+            // can make the determinant non-zero for exactly collinear vertices, and the hit would
+            // carry a NaN normal.
+            if (detail::triangle_normal(positions_[idx[1]] - v0, positions_[idx[2]] - v0) != Vec3<S>(S(0)))
+                blocks_[i / 4].set(int(i % 4), v0, positions_[idx[1]], positions_[idx[2]]);
+        }
+    });
 }
 
 }  // namespace photon

@@ -158,9 +158,11 @@ public:
     }
     [[nodiscard]] std::span<const Medium<S>> media() const noexcept { return media_; }
 
+    /// The scene BVH's build options: objects cost far more than a node visit, so leaves are small.
+    static constexpr BvhConfig default_bvh_config{.max_leaf_size = 2};
     /// Builds the acceleration structure. Call after the last add() and before any query
     /// (the commit step of Embree's API); queries are then const and thread-safe.
-    void commit(BvhConfig config = {.max_leaf_size = 2});
+    void commit(BvhConfig config = default_bvh_config);
     [[nodiscard]] bool committed() const noexcept { return committed_; }
 
     [[nodiscard]] std::span<const Object> objects() const noexcept { return objects_; }
@@ -278,20 +280,18 @@ using DefaultScene =
 
 template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhConfig config) {
     std::vector<BBox<S>> boxes;
-    std::vector<Vec3<S>> centers;
     std::vector<std::uint32_t> ids;
     unbounded_.clear();
     for (std::uint32_t i = 0; i < objects_.size(); ++i) {
         const BBox<S> b = object_bounds(i);
         if (b.is_finite()) {
             boxes.push_back(b);
-            centers.push_back(b.center());
             ids.push_back(i);
         } else if (!b.is_empty()) {
             unbounded_.push_back(i);
         }
     }
-    bvh_ = Bvh<S>(boxes, centers, config);
+    bvh_ = Bvh<S>(boxes, config);
     bvh_objects_.clear();
     for (std::uint32_t p : bvh_.primitive_indices()) bvh_objects_.push_back(ids[p]);
     environment_ball_ = boxes.empty() ? Ball<S>{} : ball_around(bvh_.bounds());

@@ -83,13 +83,16 @@ template <Scalar S>
     if (auto sky = build_environment<S>(desc, warn, &images)) scene.set_environment(std::move(*sky));
     for (const Fog<S>& fog : build_fogs<S>(desc)) scene.add_fog(fog);
     for (const Medium<S>& medium : build_media<S>(desc.media, Transform{}, warn)) scene.add_medium(medium);
+    builder.set_build_threads(settings.threads);
     builder.add_all(scene);
     // The effects plan names objects and lights by where the file writes them.
     for (std::uint32_t id = 0; id < builder.object_locations().size(); ++id)
         scene.set_object_label(id, builder.object_locations()[id].str());
     for (std::size_t i = 0; i < builder.light_locations().size(); ++i)
         scene.set_light_label(i, builder.light_locations()[i].str());
-    scene.commit();
+    BvhConfig bvh = DefaultScene<S>::default_bvh_config;
+    bvh.threads = settings.threads;
+    scene.commit(bvh);
     // Said here, where the object's place in the file is known, for `check` and `render` alike
     // (render() lists the same objects in RenderStats::warnings for programs using the library).
     if (settings.mode != RenderMode::rt && settings.mode != RenderMode::reference && scene_has_caustics(scene))

@@ -41,6 +41,9 @@ public:
         : desc_(desc), warn_(warn), max_primitives_(max_primitives), images_(images),
           mesh_files_([&warn](const SourceLocation& at, const std::string& m) { warn(at, m); }) {}
 
+    /// Threads for the meshes' BVH builds (RenderSettings::threads; the trees do not depend on it).
+    void set_build_threads(unsigned threads) { build_threads_ = threads; }
+
     void add_all(DefaultScene<S>& scene) {
         scene_ = &scene;
         for (const Object& o : desc_.objects) add(o, Inherited{});
@@ -443,7 +446,7 @@ private:
                 indices.push_back({base, base + 1, base + 2});
             }
         }
-        scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices)), m, opt);
+        scene_->add(TriangleMesh<S>(std::move(positions), std::move(indices), BvhConfig{.threads = build_threads_}), m, opt);
     }
     void add_shape(const CylinderShape& c, const Transform& t, MaterialId m, ObjectOptions opt) {
         place(c, t, [&](auto shape) { scene_->add(std::move(shape), m, opt); });
@@ -637,6 +640,7 @@ private:
     std::optional<bool> has_media_;  ///< whether any media are written (scene_has_media)
     std::vector<SourceLocation> object_at_, light_at_;  ///< where each of the scene's objects and lights is written
     std::size_t max_primitives_;
+    unsigned build_threads_ = 0;
     std::size_t file_triangles_ = 0;  ///< triangles of mesh files, for every use of them
     ImageFiles& images_;
     MeshFiles mesh_files_;
