@@ -36,7 +36,6 @@ double ground_optical_length(const Vec3<double>& o, const Vec3<double>& d, doubl
 /// The three integrators' radiance along one camera ray: rt (pm's camera side), the path tracer
 /// and sppm's camera path, which must agree wherever no light source is involved.
 template <class SceneT> std::vector<Rgb<double>> seen_by_every_mode(const SceneT& scene, const Ray<typename SceneT::scalar_type>& ray) {
-    using S = typename SceneT::scalar_type;
     RenderSettings settings;
     settings.mode = RenderMode::rt;
     const PhotonMaps no_maps;
