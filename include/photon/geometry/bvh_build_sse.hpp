@@ -81,7 +81,7 @@ auto Bvh<S>::build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Ve
                        _mm_setr_ps(b.max.x, b.max.y, b.max.z, std::bit_cast<float>(id))};
     };
     // BBox::center's operations; lane 3 (the id) is masked so that it never meets arithmetic.
-    const auto centre = [xyz, centers](const SsePrim& p) {
+    const auto centre = [=](const SsePrim& p) {  // copies: xyz, or centers
         if constexpr (BoxCentres) {
             return _mm_mul_ps(_mm_add_ps(p.lo, _mm_and_ps(p.hi, xyz)), _mm_set1_ps(0.5f));
         } else {
