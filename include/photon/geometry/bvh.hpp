@@ -109,13 +109,18 @@ private:
         std::uint32_t count = 0;  ///< primitives in a leaf; 0 marks an inner node
         [[nodiscard]] bool is_leaf() const noexcept { return count != 0; }
     };
-    /// The binary tree: room for the most nodes a build can write (4n: a parallel build gives its
-    /// top and each subtree a region of their own), allocated but never initialised as a whole,
-    /// so that only the pages written are touched (about a quarter), in huge pages.
+    /// Whether a build of n primitives on `threads` threads (0: all) splits in parallel.
+    [[nodiscard]] static bool parallel_build(std::size_t n, unsigned threads) noexcept {
+        return n >= (1u << 14) && resolve_threads(threads) > 1;
+    }
+    /// The binary tree: room for the most nodes a build can write (2n - 1; 4n in parallel, whose
+    /// top and subtrees have regions of their own), allocated but never initialised as a whole,
+    /// so that only the pages written are touched, in huge pages.
     class BinaryNodes {
     public:
         std::size_t count = 0;  ///< nodes in the tree (regions leave unused slots between them)
 
+        BinaryNodes(std::size_t n, unsigned threads) : BinaryNodes((parallel_build(n, threads) ? 4 : 2) * n) {}
         explicit BinaryNodes(std::size_t capacity)
             : capacity_(capacity), nodes_(capacity > 0 ? HugePageAllocator<BinaryNode>().allocate(capacity) : nullptr) {}
         BinaryNodes(BinaryNodes&& other) noexcept

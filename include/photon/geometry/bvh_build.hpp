@@ -41,7 +41,7 @@ auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S
         centers = box_centres;
     }
     const std::size_t n = boxes.size();
-    BinaryNodes nodes(n == 0 ? 0 : 4 * n);
+    BinaryNodes nodes(n, config.threads);
     prim_ids_.resize(n);
     std::iota(prim_ids_.begin(), prim_ids_.end(), 0u);
     if (n == 0) return nodes;
@@ -155,7 +155,6 @@ auto Bvh<S>::build_binary(std::span<const BBox<S>> boxes, std::span<const Vec3<S
 template <Scalar S>
 template <class Task, class MakeSplit>
 void Bvh<S>::run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSplit make_split) {
-    constexpr std::uint32_t min_parallel_build = 1u << 14;
     const std::uint32_t n = nodes[0].count;
     const unsigned workers = resolve_threads(threads);
     // Splits until the tree below `tree[task.node]` is done, or once when `once`; returns the
@@ -172,7 +171,7 @@ void Bvh<S>::run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSpl
         return depth;
     };
     NodeRegion top{nodes.data(), 1};  // the root; room for 2n nodes
-    if (workers <= 1 || n < min_parallel_build) {
+    if (!parallel_build(n, threads)) {
         auto split = make_split();
         std::vector<Task> stack{root};
         depth_ = run(top, stack, split, false);
@@ -187,8 +186,9 @@ void Bvh<S>::run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSpl
         top[at] = region[0];
     };
 
-    // About sixteen subtrees per thread, so that the largest-first order balances the threads.
-    const std::uint32_t cutoff = std::max<std::uint32_t>(min_parallel_build / 4, n / (16 * workers));
+    // About sixteen subtrees per thread, so that the largest-first order balances the threads, of
+    // at least 4,096 primitives, so that a task is worth handing out.
+    const std::uint32_t cutoff = std::max<std::uint32_t>(4096, n / (16 * workers));
     depth_ = 0;
     std::vector<Task> level{root}, subtrees;
     while (!level.empty()) {

@@ -60,7 +60,7 @@ auto Bvh<S>::build_binary_sse(std::span<const BBox<S>> boxes, std::span<const Ve
     -> BinaryNodes {
     using detail::SseBox, detail::SsePrim;
     const std::size_t n = boxes.size();
-    BinaryNodes nodes(n == 0 ? 0 : 4 * n);
+    BinaryNodes nodes(n, config.threads);
     prim_ids_.resize(n);
     if (n == 0) return nodes;
     const unsigned bin_count = std::max(2u, config.bins);
