@@ -272,9 +272,9 @@ void build(benchmark::State& state, const std::string& impl, bool all_cores) {
     if (all_cores) config.threads = 0;
     // Embree's all-cores device is made only for its own build: its idle worker threads would
     // compete with photon's.
-    if (all_cores && impl != "photon" && !world().all_cores_device)
-        world().all_cores_device = std::make_unique<EmbreeDevice>(0);
-    EmbreeDevice& device = all_cores && impl != "photon" ? *world().all_cores_device : world().device;
+    const bool embree_on_all_cores = all_cores && impl != "photon";
+    if (embree_on_all_cores && !world().all_cores_device) world().all_cores_device = std::make_unique<EmbreeDevice>(0);
+    EmbreeDevice& device = embree_on_all_cores ? *world().all_cores_device : world().device;
     for (auto _ : state) {
         if (impl == "photon") {
             const Mesh mesh(data.positions, data.triangles, config);

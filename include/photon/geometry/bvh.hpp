@@ -120,9 +120,10 @@ private:
     public:
         std::size_t count = 0;  ///< nodes in the tree (regions leave unused slots between them)
 
-        BinaryNodes(std::size_t n, unsigned threads) : BinaryNodes((parallel_build(n, threads) ? 4 : 2) * n) {}
-        explicit BinaryNodes(std::size_t capacity)
-            : capacity_(capacity), nodes_(capacity > 0 ? HugePageAllocator<BinaryNode>().allocate(capacity) : nullptr) {}
+        /// For a build of n primitives on `threads` threads.
+        BinaryNodes(std::size_t n, unsigned threads)
+            : capacity_((parallel_build(n, threads) ? 4 : 2) * n),
+              nodes_(n > 0 ? HugePageAllocator<BinaryNode>().allocate(capacity_) : nullptr) {}
         BinaryNodes(BinaryNodes&& other) noexcept
             : count(other.count), capacity_(std::exchange(other.capacity_, 0)),
               nodes_(std::exchange(other.nodes_, nullptr)) {}

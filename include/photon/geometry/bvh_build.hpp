@@ -178,8 +178,16 @@ void Bvh<S>::run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSpl
         nodes.count = top.used;
         return;
     }
-    // A task writes a copy of its node and the nodes below it into `region`, numbered from 0;
-    // `place` then numbers them from `offset` and puts the copy in the node's place.
+    // A task writes a copy of its node and the nodes below it into `region`, numbered from 0,
+    // leaving the children of its last split on `stack`; `place` then numbers them from `offset`
+    // and puts the copy in the node's place.
+    const auto split_in = [&](NodeRegion& region, Task task, std::vector<Task>& stack, bool once) {
+        region.push_back(top[task.node]);
+        task.node = 0;
+        stack = {task};
+        auto split = make_split();
+        return run(region, stack, split, once);
+    };
     const auto place = [&](std::uint32_t at, NodeRegion region, std::uint32_t offset) {
         for (std::uint32_t k = 0; k < region.used; ++k)
             if (!region[k].is_leaf()) region[k].first += offset;
@@ -203,12 +211,7 @@ void Bvh<S>::run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSpl
         parallel_for(large.size(), 1, workers, [&](std::size_t first, std::size_t last) {
             for (std::size_t i = first; i < last; ++i) {
                 NodeRegion region{done[i].tree.data(), 0};
-                region.push_back(top[large[i].node]);
-                Task task = large[i];
-                task.node = 0;
-                done[i].children = {task};
-                auto split = make_split();
-                run(region, done[i].children, split, true);
+                split_in(region, large[i], done[i].children, true);
                 done[i].used = region.used;
             }
         });
@@ -239,12 +242,8 @@ void Bvh<S>::run_splits(BinaryNodes& nodes, Task root, unsigned threads, MakeSpl
         for (std::size_t k = first; k < last; ++k) {
             const std::size_t i = order[k];
             NodeRegion region{nodes.data() + offsets[i], 0};
-            region.push_back(top[subtrees[i].node]);
-            Task task = subtrees[i];
-            task.node = 0;
-            std::vector<Task> stack{task};
-            auto split = make_split();
-            depths[i] = run(region, stack, split, false);
+            std::vector<Task> stack;
+            depths[i] = split_in(region, subtrees[i], stack, false);
             used[i] = region.used;
             place(subtrees[i].node, region, offsets[i]);  // writes only this task's node of the top
         }
