@@ -172,20 +172,34 @@ public:
         Rgb<S> sum(S(0));
         S inverse_distances = 0;
         for (unsigned i = 0; i < count; ++i) {
-            const Vec3<S> local = strata.direction(i / strata.columns, i % strata.columns, ctx.rng.uniform2<S>());
-            const Vec3<S> dir = frame.to_world(local);
-            S distance = std::numeric_limits<S>::infinity();
-            Rgb<S> l(S(0));
-            if (!geometric_n || glm::dot(*geometric_n, dir) > S(0)) {
-                ++ctx.rays.gather;
-                l = gathered_radiance(Ray<S>{x, dir}, 1, ctx, &distance);
-                sum += l;
-                inverse_distances += S(1) / distance;
-            }
-            if (samples) samples->push_back({local, l, distance});
+            const GatherSample<S> sample = gather_sample(x, frame, strata, i, ctx, geometric_n);
+            sum += sample.radiance;
+            inverse_distances += S(1) / sample.distance;
+            if (samples) samples->push_back(sample);
         }
         return {sum * (pi<S> / S(count)),
                 inverse_distances > S(0) ? S(count) / inverse_distances : std::numeric_limits<S>::infinity()};
+    }
+
+    /// One ray of a stratified gather at x (offset) in `frame` (z the shading normal): cell `cell`
+    /// of `strata` (row by row), jittered within sub-cell `sub_cell` of `within` when the cell is
+    /// split further; a direction below the geometric normal, when one is given, traces no ray
+    /// and brings nothing.
+    [[nodiscard]] GatherSample<S> gather_sample(const Vec3<S>& x, const Frame<S>& frame, const GatherStrata& strata,
+                                                unsigned cell, ShadingContext& ctx,
+                                                const std::optional<Vec3<S>>& geometric_n,
+                                                GatherStrata within = {}, unsigned sub_cell = 0) const {
+        const Vec2<S> jitter = ctx.rng.uniform2<S>();
+        const Vec2<S> u{(S(sub_cell / within.columns) + jitter.x) / S(within.rows),
+                        (S(sub_cell % within.columns) + jitter.y) / S(within.columns)};
+        const Vec3<S> local = strata.direction(cell / strata.columns, cell % strata.columns, u);
+        const Vec3<S> dir = frame.to_world(local);
+        GatherSample<S> sample{local, Rgb<S>(S(0)), std::numeric_limits<S>::infinity()};
+        if (!geometric_n || glm::dot(*geometric_n, dir) > S(0)) {
+            ++ctx.rays.gather;
+            sample.radiance = gathered_radiance(Ray<S>{x, dir}, 1, ctx, &sample.distance);
+        }
+        return sample;
     }
 
     /// Calls visit(x, n, geometric_n, path_length) for every diffuse hit of the camera ray and of the mirror
