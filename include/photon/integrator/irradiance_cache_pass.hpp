@@ -14,9 +14,13 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
+#include <cstdint>
+#include <limits>
 #include <mutex>
+#include <optional>
 #include <vector>
 
+#include "../estimator/gather_noise.hpp"
 #include "../parallel/parallel_for.hpp"
 #include "../scene/camera.hpp"
 #include "radiance.hpp"
@@ -25,6 +29,95 @@ namespace photon {
 
 /// The image width whose pixels bound the irradiance cache's record radii, at the least.
 inline constexpr unsigned cache_reference_width = 800;
+
+/// The most rays a cache record gathers in all, as a multiple of its first gather's, when that
+/// one is noisier than RenderSettings::cache_gather_noise.
+inline constexpr unsigned cache_gather_max_factor = 4;
+
+/// One record's final gather: irradiance, harmonic mean distance of the hits, gradients.
+template <Scalar S> struct RecordGather {
+    Rgb<S> irradiance;
+    S harmonic_distance;
+    IrradianceGradients gradients;
+    bool gathered_again = false;  ///< its first gather was noisier than wanted
+};
+
+/// A record's final gather of `final_gather_rays` rays, one per cell. Where its cells say it is
+/// noisier than `cache_gather_noise`, more rays go into the cells that vary (each cell's spread,
+/// taken as the largest in its 3 x 3 neighbourhood so that a cell beside a bright one that its
+/// first ray missed gets rays too, sets its share: Neyman's allocation), as many as would meet
+/// the wanted noise were they spread evenly (noise falls as one over the square root of the
+/// rays), at most `cache_gather_max_factor` times the first gather in all. Each cell then counts
+/// as the mean of its rays, in the irradiance and in the gradients. A record is read over many
+/// pixels, so its noise shows as a blotch the size of its radius: a wall lit by a small sunlit
+/// patch of floor needs the extra rays, and only in the cells that see the patch.
+template <class Integrator, Scalar S>
+[[nodiscard]] RecordGather<S> gather_record(const Integrator& integrator, const Vec3<S>& x, const Vec3<S>& n,
+                                            const Vec3<S>& geometric_n, const RenderSettings& settings,
+                                            ShadingContext& ctx, std::vector<GatherSample<S>>& samples) {
+    const Frame<S> frame = Frame<S>::from_normal(n);
+    const GatherStrata strata = GatherStrata::for_rays(settings.final_gather_rays);
+    const auto first = integrator.gather(x, n, settings.final_gather_rays, ctx, geometric_n, &samples);
+    RecordGather<S> result{first.irradiance, first.harmonic_distance, {}};
+    const double wanted = settings.cache_gather_noise;
+    const double noise = wanted > 0 ? gather_relative_noise<S>(samples, strata) : 0.0;
+    const double cells = strata.count();
+    const double extra = std::min(double(cache_gather_max_factor - 1) * cells,
+                                  cells * ((noise / wanted) * (noise / wanted) - 1));
+    if (!(noise > wanted) || !(extra >= 1)) {
+        result.gradients = irradiance_gradients<S>(samples, strata, frame);
+        return result;
+    }
+    // Each cell's spread: how much its 3 x 3 neighbours differ among themselves (the range of
+    // their values; phi wraps around), so that an edge in any direction, and a cell beside a
+    // bright one, draw rays. The cell's own first ray is left out of its spread: a share chosen
+    // by the ray it replaces would favour the cells whose ray happened to be bright or dark.
+    std::vector<double> spread(samples.size(), 0.0);
+    double spread_sum = 0;
+    for (unsigned j = 0; j < strata.rows; ++j)
+        for (unsigned k = 0; k < strata.columns; ++k) {
+            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+            for (unsigned jj = j == 0 ? 0 : j - 1; jj <= std::min(j + 1, strata.rows - 1); ++jj)
+                for (unsigned kk : {(k + strata.columns - 1) % strata.columns, k, (k + 1) % strata.columns}) {
+                    if (jj == j && kk == k) continue;
+                    const double l = gather_luminance(samples[std::size_t(jj) * strata.columns + kk].radiance);
+                    lo = std::min(lo, l);
+                    hi = std::max(hi, l);
+                }
+            const double s = hi > lo ? hi - lo : 0.0;
+            spread[std::size_t(j) * strata.columns + k] = s;
+            spread_sum += s;
+        }
+    if (!(spread_sum > 0)) {
+        result.gradients = irradiance_gradients<S>(samples, strata, frame);
+        return result;
+    }
+    const std::optional<Vec3<S>> below = geometric_n == n ? std::nullopt : std::optional<Vec3<S>>(geometric_n);
+    Rgb<S> sum(S(0));
+    for (unsigned c = 0; c < strata.count(); ++c) {
+        // Whole rays: the fraction is rounded up with its own probability, so the count is right
+        // on average. A cell drawing at least two takes them in place of its first ray, split into
+        // sub-cells of one ray each: stratified, as a finer gather (the error of a sharp-edged
+        // light falls faster so than with rays at random in the cell). Kept, the first ray would
+        // weigh the cells it happened to light more than their share.
+        const double share = extra * spread[c] / spread_sum;
+        const unsigned fresh = unsigned(share) + (ctx.rng.uniform<double>() < share - std::floor(share) ? 1u : 0u);
+        if (fresh >= 2) {
+            unsigned rows = unsigned(std::sqrt(double(fresh)));
+            while (fresh % rows != 0) --rows;  // rows x columns == fresh exactly
+            const GatherStrata within{rows, fresh / rows};
+            Rgb<S> cell(S(0));
+            for (unsigned r = 0; r < fresh; ++r)
+                cell += integrator.gather_sample(x, frame, strata, c, ctx, below, within, r).radiance;
+            samples[c].radiance = cell / S(fresh);
+        }
+        sum += samples[c].radiance;
+    }
+    result.irradiance = sum * (pi<S> / S(strata.count()));
+    result.gradients = irradiance_gradients<S>(samples, strata, frame);
+    result.gathered_again = true;
+    return result;
+}
 
 template <class SceneT>
 [[nodiscard]] IrradianceCache build_irradiance_cache(const SceneT& scene,
@@ -58,6 +151,7 @@ template <class SceneT>
             if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) return;
             ShadingContext ctx;
             std::vector<GatherSample<S>> samples;
+            std::uint64_t regathered = 0;
             for (std::size_t i = b; i < e; ++i) {
                 if (!owns(settings.share, i, Deal::hashed)) continue;  // another rank's
                 const unsigned px = unsigned(i % cols) * spacing + spacing / 2, py = unsigned(i / cols) * spacing + spacing / 2;
@@ -71,19 +165,19 @@ template <class SceneT>
                     const Vec3<float> xf(x), nf(n);
                     if (cache.interpolate(xf, nf, ctx.nearest)) return;
                     if (!mine.empty() && IrradianceCache(mine, error).interpolate(xf, nf, ctx.nearest)) return;
-                    const auto g = integrator.gather(x, n, settings.final_gather_rays, ctx, geometric_n, &samples);
+                    const RecordGather<S> g = gather_record(integrator, x, n, geometric_n, settings, ctx, samples);
                     const S footprint = pixel.size + length * pixel.angle;
                     const S r = std::clamp(g.harmonic_distance, S(1.5) * footprint / S(error),
                                            S(24) * footprint / S(error));
-                    IrradianceRecord record{xf, nf, Rgb<float>(g.irradiance), float(r),
-                                            irradiance_gradients<S>(samples, GatherStrata::for_rays(settings.final_gather_rays),
-                                                                    Frame<S>::from_normal(n))};
+                    IrradianceRecord record{xf, nf, Rgb<float>(g.irradiance), float(r), g.gradients};
+                    if (g.gathered_again) ++regathered;
                     limit_translation_gradient(record);
                     mine.push_back(record);
                 });
             }
             const std::lock_guard lock(merge);
             stats.rays += ctx.rays;
+            stats.cache_regathered += regathered;
         });
         share_lists(settings.share, found, "irradiance cache", Deal::hashed);  // every rank sees every record
         for (auto& list : found) records.insert(records.end(), list.begin(), list.end());

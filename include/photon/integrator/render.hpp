@@ -289,6 +289,7 @@ template <class SceneT>
     auto count_every_rank = [&] {  // each rank counted the rays of its own share of the work
         stats.rays = sum_over_ranks(settings.share, stats.rays, "statistics");
         stats.estimates = sum_over_ranks(settings.share, stats.estimates, "statistics");
+        stats.cache_regathered = sum_over_ranks(settings.share, stats.cache_regathered, "statistics");
         stats.pixel_samples = sum_over_ranks(settings.share, stats.pixel_samples, "statistics");
     };
     if (settings.mode == RenderMode::reference)

@@ -94,6 +94,12 @@ struct RenderSettings {
     /// pm: final gathers are cached and interpolated with this error bound (Ward's a); 0 gathers
     /// at every camera sample instead (then use fewer rays, e.g. 16).
     float irradiance_cache_error = 0.2f;
+    /// pm: the relative noise a cache record's final gather aims at. A record whose gather varies
+    /// more from cell to cell (estimator/gather_noise.hpp) gathers again where its cells vary, up
+    /// to `cache_gather_max_factor` times the rays in all; 0 (the default): every record takes
+    /// final_gather_rays. It pays where a small bright patch lights a wall (the rooms' files ask
+    /// for 0.015); where the first gather is good enough it only costs time (docs/design.md).
+    float cache_gather_noise = 0.0f;
     /// Final gathering reads irradiance precomputed at every `irradiance_stride`-th global photon
     /// (Christensen 1999) instead of running a density estimate per gather ray; 0 turns it off.
     unsigned irradiance_stride = 4;
@@ -189,6 +195,8 @@ inline void validate(const RenderSettings& s) {
     }
     if (!(s.irradiance_cache_error >= 0.0f) || !(s.irradiance_cache_error <= 1.0f))
         fail("irradiance cache error must be in [0, 1]");
+    if (!(s.cache_gather_noise >= 0.0f) || !(s.cache_gather_noise <= 1.0f))
+        fail("cache gather noise must be in [0, 1] (0: no second gather)");
     in_range(s.sppm_passes, SettingsLimits::max_sppm_passes, "sppm passes");
     if (s.sppm_photons_per_pass == 0 || s.sppm_photons_per_pass > SettingsLimits::max_sppm_photons_per_pass)
         fail("sppm photons per pass must be from 1 to " + std::to_string(SettingsLimits::max_sppm_photons_per_pass) +

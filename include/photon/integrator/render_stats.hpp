@@ -93,6 +93,7 @@ struct RenderStats {
     std::uint64_t estimates = 0;  ///< photon map density estimates
     PixelSampleStats pixel_samples;
     std::uint64_t cache_records = 0;  ///< final gathers in the irradiance cache
+    std::uint64_t cache_regathered = 0;  ///< of them, gathered again for being noisy (cache_gather_noise)
     double precompute_seconds = 0, cache_seconds = 0, render_seconds = 0, total_seconds = 0;
     bool partial = false;  ///< cancelled before every pixel was rendered
     /// What the user should know about this render's result (light the mode cannot see, objects
@@ -162,7 +163,8 @@ struct RenderStats {
     if (s.pixel_samples.pixels > 0)
         row("samples per pixel", "mean %.2f, most %u", s.pixel_samples.mean(), s.pixel_samples.most);
     row("density estimates", "%llu", (unsigned long long)s.estimates);
-    row("irradiance cache", "%llu records", (unsigned long long)s.cache_records);
+    row("irradiance cache", "%llu records, %llu gathered again for noise", (unsigned long long)s.cache_records,
+        (unsigned long long)s.cache_regathered);
     if (s.plan.photons_not_shot > 0 || s.plan.photons_moved > 0 || !s.plan.passes_skipped.empty()) {
         std::string skipped;
         for (const std::string& p : s.plan.passes_skipped) skipped += (skipped.empty() ? "" : ", ") + p;

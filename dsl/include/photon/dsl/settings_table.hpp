@@ -226,6 +226,12 @@ inline constexpr RenderSetting render_settings_table[] = {
      .kind = SettingKind::real, .hi = 1, .noun = "irradiance cache error",
      .help = "Error bound of the cache of final gathers (Ward's a; 0: gather at every sample)",
      .field = member<&RenderSettings::irradiance_cache_error>},
+    {.key = "cache_gather_noise", .keyword = "cache_gather_noise", .flag = "--cache-gather-noise",
+     .kind = SettingKind::real, .hi = 1, .noun = "cache gather noise",
+     .help = "Relative noise an irradiance cache record's gather aims at: a noisier one gathers again where its "
+             "cells vary, up to 4x the final gather rays in all (0.03, or 3% on the command line; 0: every record "
+             "takes the final gather rays)",
+     .units = "fraction", .field = member<&RenderSettings::cache_gather_noise>},
     {.key = "shadow_samples", .keyword = "shadow_samples", .flag = "--shadow-samples", .lo = 1,
      .hi = SettingsLimits::max_samples, .noun = "shadow samples",
      .help = "Shadow rays per area light and shading point (a file without it: its largest area_light N1 x N2)",
