@@ -167,7 +167,7 @@ std::string settings_line(const RenderSettings& s) {
           << radius_text(s.global_estimate.max_radius) << "), " << s.caustic_photons << " caustic (k "
           << s.caustic_estimate.k << ", radius " << radius_text(s.caustic_estimate.max_radius) << "), photon depth "
           << s.max_photon_depth << ", final gather " << s.final_gather_rays;
-    if (s.mode == RenderMode::pm && s.final_gather_rays > 0 && s.irradiance_cache_error > 0 && s.cache_gather_noise > 0)
+    if (uses_irradiance_cache(s) && s.cache_gather_noise > 0)
         o << " (cache records to " << 100 * s.cache_gather_noise << "% noise)";
     if (s.mode == RenderMode::reference && !s.reference_mis) o << ", no MIS";
     if (s.time_limit > 0) o << ", time limit " << s.time_limit << " s";

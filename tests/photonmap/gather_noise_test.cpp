@@ -75,7 +75,7 @@ struct LitPatch {
     };
 };
 
-double luminance_of(const Rgb<double>& e) { return gather_luminance(e); }
+double luminance_of(const Rgb<double>& e) { return luminance(e); }
 
 }  // namespace
 

@@ -13,11 +13,6 @@
 
 namespace photon {
 
-/// Rec. 709 luminance: the noise the eye sees, one number per sample.
-template <class S> [[nodiscard]] double luminance(const Rgb<S>& c) noexcept {
-    return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z);
-}
-
 /// Mean and variance of values seen one at a time (Welford): no cancellation when the values are
 /// large and close, as a bright flat wall's are.
 class RunningStats {

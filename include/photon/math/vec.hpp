@@ -36,6 +36,10 @@ template <Scalar S> [[nodiscard]] constexpr S min_component(const Vec3<S>& v) no
 template <Scalar S> [[nodiscard]] constexpr S average(const Rgb<S>& c) noexcept {
     return (c.x + c.y + c.z) / S(3);
 }
+/// Rec. 709 luminance: the noise the eye sees, one number per sample.
+template <Scalar S> [[nodiscard]] constexpr double luminance(const Rgb<S>& c) noexcept {
+    return 0.2126 * double(c.x) + 0.7152 * double(c.y) + 0.0722 * double(c.z);
+}
 template <Scalar S> [[nodiscard]] constexpr bool is_black(const Rgb<S>& c) noexcept {
     return c.x == S(0) && c.y == S(0) && c.z == S(0);
 }
