@@ -182,6 +182,33 @@ TEST_CASE("pm's estimated error, against a short sppm run, is within a factor of
     CHECK(none.stats.sppm.passes == 0);
 }
 
+TEST_CASE("pm's error judge traces the paths pm computes: one bounce more where pm gathers", "[error][pm]") {
+    // At max_photon_depth 2 the furnace's photons bounce at most twice. sppm sees the direct light
+    // and photons after one bounce: L_d (1 + rho). pm gathers from the map, whose photons at the
+    // gather ray's hit carry up to 2 bounces: L_d (1 + rho + rho^2). A judge with pm's own depth
+    // would call pm 17% off (normalised MSE 0.028); the judge's photons go one bounce further.
+    const FurnaceSphere f;
+    const double rho = FurnaceSphere::rho, direct = FurnaceSphere::direct();
+    RenderSettings s = furnace_settings(RenderMode::sppm);
+    s.max_photon_depth = 2;
+    s.sppm_passes = 64;
+    s.sppm_photons_per_pass = 4'000;
+    const RenderResult sppm = render(f.scene, f.camera, s);
+    CHECK(block_means(sppm.film, 1, 1)[0].r == Approx(direct * (1 + rho)).epsilon(0.02));
+
+    s.mode = RenderMode::pm;
+    s.global_photons = 20'000;
+    s.final_gather_rays = 64;
+    s.pm_error_passes = 64;
+    s.pm_error_time = 1e9;
+    const RenderResult pm = render(f.scene, f.camera, s);
+    const double pm_truth = direct * (1 + rho + rho * rho);
+    CHECK(block_means(pm.film, 1, 1)[0].r == Approx(pm_truth).epsilon(0.02));
+    REQUIRE(pm.stats.error.available);
+    INFO("estimated " << pm.stats.error.normalised_mse << ", true " << true_normalised_mse(pm.film, pm_truth));
+    CHECK(pm.stats.error.normalised_mse < 0.003);
+}
+
 TEST_CASE("pm's budget renders again with twice the photons until the target error is met or the time would run out", "[error][pm]") {
     const FurnaceSphere f;
     RenderSettings s = furnace_settings(RenderMode::pm);
