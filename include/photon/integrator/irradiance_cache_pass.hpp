@@ -30,10 +30,6 @@ namespace photon {
 /// The image width whose pixels bound the irradiance cache's record radii, at the least.
 inline constexpr unsigned cache_reference_width = 800;
 
-/// The most rays a cache record gathers in all, as a multiple of its first gather's, when that
-/// one is noisier than RenderSettings::cache_gather_noise.
-inline constexpr unsigned cache_gather_max_factor = 4;
-
 /// One record's final gather: irradiance, harmonic mean distance of the hits, gradients.
 template <Scalar S> struct RecordGather {
     Rgb<S> irradiance;

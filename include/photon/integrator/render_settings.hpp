@@ -61,6 +61,10 @@ struct PassReport {
     const Film* image = nullptr;  ///< pm: the image so far, to write as the render goes
 };
 
+/// The most rays a cache record gathers in all, as a multiple of its first gather's, when that
+/// one is noisier than RenderSettings::cache_gather_noise.
+inline constexpr unsigned cache_gather_max_factor = 4;
+
 /// Everything a render needs besides the scene and the camera. Defaults give a clean 800x600
 /// Cornell box in well under a minute on two cores.
 struct RenderSettings {

@@ -160,6 +160,9 @@ struct RenderSetting {
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #endif
 // clang-format off
+// cache_gather_noise's help text names the cap: change both together.
+static_assert(cache_gather_max_factor == 4, "update the help text of cache_gather_noise");
+
 /// Every render setting, in the order of `photon render --help` and of the docs' table.
 inline constexpr RenderSetting render_settings_table[] = {
     {.key = "width", .keyword = "width", .flag = "--width", .lo = 1, .hi = 65536, .noun = "image width",
