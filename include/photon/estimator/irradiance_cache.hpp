@@ -5,7 +5,9 @@
 // records and interpolated between them. A record at x_i with normal n_i and harmonic mean
 // distance R_i to the surfaces its rays met contributes at x with weight
 //   w_i(x) = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)),
-// and is used where w_i > 1 / a (a: the allowed error). Each record carries Ward and Heckbert's
+// and is used where w_i > 1 / a (a: the allowed error), with weight w_i - 1 / a, which falls to 0
+// at the edge of its domain (Ward's own weight jumps there from 1 / a to 0, so the records that
+// enter and leave the sum draw their domains' edges on the walls). Each record carries Ward and Heckbert's
 // (1992) rotation and translation gradients (irradiance_gradients.hpp) and contributes to first
 // order, E_i + (n_i x n) . grad_r + (x - x_i) . grad_t: at zeroth order the interpolated
 // irradiance is flat around each record and bends only between records, which shows as blotches
@@ -104,7 +106,10 @@ public:
             const float denom = std::sqrt(c.distance2) / r.harmonic_distance + std::sqrt(std::max(0.0f, 1.0f - cos_n));
             const float w = denom > 0.0f ? 1.0f / denom : 1e30f;
             if (!(w > threshold)) continue;
-            const float wc = std::min(w, 1e6f);
+            // Less the threshold, so that a record's weight falls to 0 at the edge of its domain
+            // instead of jumping there from 1 / a: a record entering or leaving the sum then
+            // changes the interpolation continuously, not as a ragged contour on the wall.
+            const float wc = std::min(w, 1e6f) - threshold;
             const Vec3<float> turn = glm::cross(r.normal, n), move = x - r.position;
             const IrradianceGradients& g = r.gradients;
             const Rgb<float> e(r.irradiance.r + glm::dot(turn, g.rotation[0]) + glm::dot(move, g.translation[0]),
