@@ -3,13 +3,13 @@
 // Irradiance caching (Ward, Rubinstein and Clear 1988): final gathering is expensive and noisy
 // per pixel, but indirect irradiance changes slowly, so it is computed with many rays at sparse
 // records and interpolated between them. A record at x_i with normal n_i and harmonic mean
-// distance R_i to the surfaces its rays met contributes at x with weight
-//   w_i(x) = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i)),
-// and is used where w_i > 1 / a (a: the allowed error), with weight w_i - 1 / a, which falls to 0
-// at the edge of its domain (Ward's own weight jumps there from 1 / a to 0, so the records that
-// enter and leave the sum draw their domains' edges on the walls). Each record carries Ward and Heckbert's
-// (1992) rotation and translation gradients (irradiance_gradients.hpp) and contributes to first
-// order, E_i + (n_i x n) . grad_r + (x - x_i) . grad_t: at zeroth order the interpolated
+// distance R_i to the surfaces its rays met is used at x where Ward's weight
+//   w_i(x) = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i))
+// exceeds 1 / a (a: the allowed error), and weighs w_i - 1 / a there, which falls to 0 at the
+// edge of its domain (Ward's own weight jumps there from 1 / a to 0, so the records that
+// enter and leave the sum draw their domains' edges on the walls). Each record carries Ward and
+// Heckbert's (1992) rotation and translation gradients (irradiance_gradients.hpp) and contributes
+// to first order, E_i + (n_i x n) . grad_r + (x - x_i) . grad_t: at zeroth order the interpolated
 // irradiance is flat around each record and bends only between records, which shows as blotches
 // on every wall. Practical limits after Krivanek et al. (2006): each R_i is clamped by its
 // neighbours' R_j + |x_i - x_j| (R is a distance to geometry: a record next to one that sees a
