@@ -204,25 +204,32 @@ TEST_CASE("neighbour clamping never raises a radius, honours R_j + d, and ignore
         CHECK(reversed[records.size() - 1 - i].harmonic_distance == clamped[i].harmonic_distance);
 }
 
-TEST_CASE("the interpolated irradiance is continuous where a record's domain ends") {
+TEST_CASE("the interpolated irradiance is continuous where a record's reach ends, and only valid records count") {
     // A record of irradiance 1 with a wide domain (R = 10) and one of 3 beside it with a small one
-    // (R = 1), a = 0.2: the second's domain (w > 1/a) ends 0.2 from it. Walking out of it, away
-    // from the first, the interpolation must fall smoothly to 1: with Ward's own weight, which is
-    // 1/a at the edge and 0 beyond, it would step there from about 1.26 to 1.
+    // (R = 1), a = 0.2: the second is valid out to 0.2 from it (w > 1/a) and blends out to
+    // cache_blend_reach times that. Walking out, away from the first, the interpolation must fall
+    // smoothly to 1: with Ward's own weight, 1/a at the edge and 0 beyond, it would step there
+    // (from about 1.26 to 1).
     const Vec3<float> up{0.0f, 0.0f, 1.0f};
     const std::vector<IrradianceRecord> records{{Vec3<float>{0.0f, 0.0f, 0.0f}, up, Rgb<float>(1.0f), 10.0f, {}},
                                                 {Vec3<float>{0.1f, 0.0f, 0.0f}, up, Rgb<float>(3.0f), 1.0f, {}}};
     const IrradianceCache cache(records, 0.2f);
     std::vector<Neighbor<float>> buffer;
     const auto at = [&](float x) { return cache.interpolate(Vec3<float>{x, 0.0f, 0.0f}, up, buffer).value().r; };
-    const float edge = 0.1f + 0.2f;  // |x - x_2| / R = a
+    const float domain_edge = 0.1f + 0.2f, reach_edge = 0.1f + cache_blend_reach * 0.2f;
     CHECK(at(0.1f) == Approx(3.0f).epsilon(1e-4));  // on a record: its own value
-    CHECK(at(edge - 1e-3f) - at(edge + 1e-3f) < 0.01f);
-    CHECK(at(edge + 1e-3f) == Approx(1.0f));  // the first record's alone
+    CHECK(std::abs(at(domain_edge - 1e-3f) - at(domain_edge + 1e-3f)) < 0.01f);
+    CHECK(at(reach_edge - 1e-3f) - at(reach_edge + 1e-3f) < 0.01f);
+    CHECK(at(reach_edge + 1e-3f) == Approx(1.0f));  // the first record's alone
     float previous = at(0.1f);
-    for (int i = 1; i <= 300; ++i) {  // from the second record out, never rising
+    for (int i = 1; i <= 400; ++i) {  // from the second record out, never rising
         const float e = at(0.1f + 0.001f * float(i));
         CHECK(e <= previous + 1e-5f);
         previous = e;
     }
+    // Blending reaches further than validity, but a point no record is valid at has no value:
+    // the renderer gathers there (which records exist does not depend on the reach).
+    const IrradianceCache lone(std::vector<IrradianceRecord>{records[1]}, 0.2f);
+    CHECK(lone.interpolate(Vec3<float>{0.1f + 0.19f, 0.0f, 0.0f}, up, buffer).has_value());
+    CHECK_FALSE(lone.interpolate(Vec3<float>{0.1f + 0.21f, 0.0f, 0.0f}, up, buffer).has_value());
 }

@@ -3,11 +3,14 @@
 // Irradiance caching (Ward, Rubinstein and Clear 1988): final gathering is expensive and noisy
 // per pixel, but indirect irradiance changes slowly, so it is computed with many rays at sparse
 // records and interpolated between them. A record at x_i with normal n_i and harmonic mean
-// distance R_i to the surfaces its rays met is used at x where Ward's weight
+// distance R_i to the surfaces its rays met is valid at x where Ward's weight
 //   w_i(x) = 1 / (|x - x_i| / R_i + sqrt(1 - n . n_i))
-// exceeds 1 / a (a: the allowed error), and weighs w_i - 1 / a there, which falls to 0 at the
-// edge of its domain (Ward's own weight jumps there from 1 / a to 0, so the records that
-// enter and leave the sum draw their domains' edges on the walls). Each record carries Ward and
+// exceeds 1 / a (a: the allowed error): where none is, the renderer gathers anew. Where one is,
+// the records blend a little further, out to w_i > 1 / (s a) with s = cache_blend_reach, with
+// weight w_i - 1 / (s a), which falls to 0 at the edge of that reach. Ward's own weight jumps
+// there from 1 / a to 0, so the records entering and leaving the sum drew their domains' edges
+// on the walls; the wider reach averages more records, and so more of their own noise, which a
+// weight falling to 0 alone would average less (docs/design.md). Each record carries Ward and
 // Heckbert's (1992) rotation and translation gradients (irradiance_gradients.hpp) and contributes
 // to first order, E_i + (n_i x n) . grad_r + (x - x_i) . grad_t: at zeroth order the interpolated
 // irradiance is flat around each record and bends only between records, which shows as blotches
@@ -26,6 +29,10 @@
 #include "irradiance_gradients.hpp"
 
 namespace photon {
+
+/// How much further than its domain (w > 1/a) a record blends into the interpolation: out to
+/// w > 1 / (cache_blend_reach a). Which records exist does not depend on it.
+inline constexpr float cache_blend_reach = 1.5f;
 
 /// One cached final gather.
 struct IrradianceRecord {
@@ -81,7 +88,8 @@ public:
     IrradianceCache() = default;
     /// A cache over `records` for error bound `error` (Ward's a, typically 0.1 to 0.3).
     IrradianceCache(std::span<const IrradianceRecord> records, float error) : error_(error), tree_(records) {
-        for (const auto& r : records) max_validity_ = std::max(max_validity_, error * r.harmonic_distance);
+        for (const auto& r : records)
+            max_reach_ = std::max(max_reach_, cache_blend_reach * error * r.harmonic_distance);
     }
 
     [[nodiscard]] std::size_t size() const noexcept { return tree_.size(); }
@@ -93,10 +101,11 @@ public:
     [[nodiscard]] std::optional<Rgb<float>> interpolate(const Vec3<float>& x, const Vec3<float>& n,
                                                         std::vector<Neighbor<float>>& buffer) const {
         if (tree_.empty()) return std::nullopt;
-        const auto found = tree_.within_radius(x, max_validity_, buffer);
+        const auto found = tree_.within_radius(x, max_reach_, buffer);
         Rgb<float> sum(0.0f);
         float weights = 0.0f;
-        const float threshold = 1.0f / error_;
+        bool valid = false;
+        const float domain = 1.0f / error_, reach = 1.0f / (cache_blend_reach * error_);
         for (const Neighbor<float>& c : found) {
             const IrradianceRecord& r = tree_.payload(c.index);
             const float cos_n = glm::dot(n, r.normal);
@@ -105,11 +114,9 @@ public:
             if (glm::dot(x - r.position, r.normal + n) < -0.02f * r.harmonic_distance) continue;
             const float denom = std::sqrt(c.distance2) / r.harmonic_distance + std::sqrt(std::max(0.0f, 1.0f - cos_n));
             const float w = denom > 0.0f ? 1.0f / denom : 1e30f;
-            if (!(w > threshold)) continue;
-            // Less the threshold, so that a record's weight falls to 0 at the edge of its domain
-            // instead of jumping there from 1 / a: a record entering or leaving the sum then
-            // changes the interpolation continuously, not as a ragged contour on the wall.
-            const float wc = std::min(w, 1e6f) - threshold;
+            valid = valid || w > domain;
+            if (!(w > reach)) continue;
+            const float wc = std::min(w, 1e6f) - reach;  // 0 at the edge of the reach: no step there
             const Vec3<float> turn = glm::cross(r.normal, n), move = x - r.position;
             const IrradianceGradients& g = r.gradients;
             const Rgb<float> e(r.irradiance.r + glm::dot(turn, g.rotation[0]) + glm::dot(move, g.translation[0]),
@@ -118,13 +125,13 @@ public:
             sum += wc * glm::max(e, Rgb<float>(0.0f));  // extrapolated, so it may dip below 0
             weights += wc;
         }
-        if (!(weights > 0.0f)) return std::nullopt;
+        if (!valid || !(weights > 0.0f)) return std::nullopt;
         return sum / weights;
     }
 
 private:
     float error_ = 0.25f;
-    float max_validity_ = 0.0f;
+    float max_reach_ = 0.0f;  ///< the largest distance at which a record still blends in
     KdTree<IrradianceRecord> tree_;
 };
 
