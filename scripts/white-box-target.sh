@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Issue 13's white-box target, checked against a judge stronger than the accuracy study's: relative
 # MSE 2.5e-4 in under 6 CPU-s at 512x512 (examples/scenes/white_box.pov). The judge is one path-traced
-# render of JUDGE_SPP samples per pixel (default 8192: about 70 CPU-minutes here), made once and
+# render of JUDGE_SPP samples per pixel (default 8192: about 14 CPU-minutes here), made once and
 # kept; its noise floor is its own estimate from its two independent half-images (the "estimated
 # error" line of its statistics: an unbiased estimate of the variance of a mean of independent
 # samples), subtracted from every measured error in the "net" column. Each setting is rendered
