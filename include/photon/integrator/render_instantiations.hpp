@@ -2,8 +2,9 @@
 #pragma once
 // The render functions for the scene language's scene types, DefaultScene<float> and
 // DefaultScene<double>, listed once, with the effects plan (`photon check` prints it without
-// rendering). Header-only use instantiates them in every translation unit
-// that renders (15 to 20 CPU-seconds each at -O3). A program built with PHOTON_SEPARATE_COMPILATION
+// rendering) and the scene's commit(), its BVH build (4 of the 10 CPU-s that examples/cornell.cpp
+// took to compile without it). Header-only use instantiates them in every translation unit that
+// renders (15 to 20 CPU-seconds each at -O3). A program built with PHOTON_SEPARATE_COMPILATION
 // (CMake target photon::compiled) sees them as `extern template` and links the one compiled unit
 // that instantiates them (src/render_instantiations.cpp); other scene types are unaffected.
 
@@ -13,6 +14,7 @@
 /// PHOTON_RENDER_INSTANTIATIONS(EXTERN, S): the explicit instantiations for DefaultScene<S>:
 /// declarations with EXTERN = extern, definitions with EXTERN empty.
 #define PHOTON_RENDER_INSTANTIATIONS(EXTERN, S)                                                                      \
+    EXTERN template void DefaultScene<S>::commit(BvhConfig);                                                        \
     EXTERN template RenderResult render<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,            \
                                                          const RenderSettings&);                                     \
     EXTERN template PhotonMaps build_photon_maps<DefaultScene<S>>(const DefaultScene<S>&, const EffectsPlan&,      \
