@@ -232,4 +232,14 @@ TEST_CASE("the interpolated irradiance is continuous where a record's reach ends
     const IrradianceCache lone(std::vector<IrradianceRecord>{records[1]}, 0.2f);
     CHECK(lone.interpolate(Vec3<float>{0.1f + 0.19f, 0.0f, 0.0f}, up, buffer).has_value());
     CHECK_FALSE(lone.interpolate(Vec3<float>{0.1f + 0.21f, 0.0f, 0.0f}, up, buffer).has_value());
+    // covers() (the pretrace's question) answers where interpolate() gives a value, tilted
+    // normals included.
+    const Vec3<float> tilts[] = {up, glm::normalize(Vec3<float>{0.3f, 0.0f, 1.0f}),
+                                 glm::normalize(Vec3<float>{1.0f, 0.0f, 1.0f})};
+    for (const IrradianceCache* c : {&cache, &lone})
+        for (int i = 0; i <= 600; ++i)
+            for (const Vec3<float>& n : tilts) {
+                const Vec3<float> x{-0.2f + 0.001f * float(i), 0.05f, 0.0f};
+                CHECK(c->covers(x, n, buffer) == c->interpolate(x, n, buffer).has_value());
+            }
 }

@@ -88,8 +88,10 @@ public:
     IrradianceCache() = default;
     /// A cache over `records` for error bound `error` (Ward's a, typically 0.1 to 0.3).
     IrradianceCache(std::span<const IrradianceRecord> records, float error) : error_(error), tree_(records) {
-        for (const auto& r : records)
+        for (const auto& r : records) {
+            max_validity_ = std::max(max_validity_, error * r.harmonic_distance);
             max_reach_ = std::max(max_reach_, cache_blend_reach * error * r.harmonic_distance);
+        }
     }
 
     [[nodiscard]] std::size_t size() const noexcept { return tree_.size(); }
@@ -108,12 +110,7 @@ public:
         const float domain = 1.0f / error_, reach = 1.0f / (cache_blend_reach * error_);
         for (const Neighbor<float>& c : found) {
             const IrradianceRecord& r = tree_.payload(c.index);
-            const float cos_n = glm::dot(n, r.normal);
-            if (cos_n <= 0.9f) continue;
-            // Ward's "in front" test: a record whose surface lies in front of x sees other light.
-            if (glm::dot(x - r.position, r.normal + n) < -0.02f * r.harmonic_distance) continue;
-            const float denom = std::sqrt(c.distance2) / r.harmonic_distance + std::sqrt(std::max(0.0f, 1.0f - cos_n));
-            const float w = denom > 0.0f ? 1.0f / denom : 1e30f;
+            const float w = ward_weight(r, x, n, c.distance2);
             valid = valid || w > domain;
             if (!(w > reach)) continue;
             const float wc = std::min(w, 1e6f) - reach;  // 0 at the edge of the reach: no step there
@@ -129,9 +126,33 @@ public:
         return sum / weights;
     }
 
+    /// Whether some record is valid at x (Ward's weight above 1/a), that is, whether interpolate()
+    /// gives a value there. The pretrace asks only this: it searches the records' domains, not
+    /// their wider reach, and sums nothing.
+    [[nodiscard]] bool covers(const Vec3<float>& x, const Vec3<float>& n, std::vector<Neighbor<float>>& buffer) const {
+        if (tree_.empty()) return false;
+        const float domain = 1.0f / error_;
+        for (const Neighbor<float>& c : tree_.within_radius(x, max_validity_, buffer))
+            if (ward_weight(tree_.payload(c.index), x, n, c.distance2) > domain) return true;
+        return false;
+    }
+
 private:
+    /// Ward's weight of record r at x (distance2 = |x - x_i|^2), 0 where r does not apply: normals
+    /// too far apart, or r's surface in front of x.
+    [[nodiscard]] static float ward_weight(const IrradianceRecord& r, const Vec3<float>& x, const Vec3<float>& n,
+                                           float distance2) {
+        const float cos_n = glm::dot(n, r.normal);
+        if (cos_n <= 0.9f) return 0.0f;
+        // Ward's "in front" test: a record whose surface lies in front of x sees other light.
+        if (glm::dot(x - r.position, r.normal + n) < -0.02f * r.harmonic_distance) return 0.0f;
+        const float denom = std::sqrt(distance2) / r.harmonic_distance + std::sqrt(std::max(0.0f, 1.0f - cos_n));
+        return denom > 0.0f ? 1.0f / denom : 1e30f;
+    }
+
     float error_ = 0.25f;
-    float max_reach_ = 0.0f;  ///< the largest distance at which a record still blends in
+    float max_validity_ = 0.0f;  ///< the largest distance at which a record is still valid
+    float max_reach_ = 0.0f;     ///< the largest distance at which a record still blends in
     KdTree<IrradianceRecord> tree_;
 };
 

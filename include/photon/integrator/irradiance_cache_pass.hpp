@@ -162,8 +162,8 @@ template <class SceneT>
                 auto& mine = found[i];
                 integrator.for_each_diffuse_hit(*ray, 1, S(0), [&](const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& geometric_n, S length) {
                     const Vec3<float> xf(x), nf(n);
-                    if (cache.interpolate(xf, nf, ctx.nearest)) return;
-                    if (!mine.empty() && IrradianceCache(mine, error).interpolate(xf, nf, ctx.nearest)) return;
+                    if (cache.covers(xf, nf, ctx.nearest)) return;
+                    if (!mine.empty() && IrradianceCache(mine, error).covers(xf, nf, ctx.nearest)) return;
                     const RecordGather<S> g = gather_record(integrator, x, n, geometric_n, settings, ctx, samples);
                     const S footprint = pixel.size + length * pixel.angle;
                     const S r = std::clamp(g.harmonic_distance, S(1.5) * footprint / S(error),
