@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // photon/film/image_io.hpp's three functions, for programs that load OpenImageIO only when they
-// touch an image (image_io_abi.hpp says why): the first call loads photon-image-io.so, looked for
+// touch an image (image_io_abi.hpp says why), PNG output excepted where libpng is linked
+// (png_output.hpp): the first call loads photon-image-io.so, looked for
 //   1. at $PHOTON_IMAGE_MODULE, if set (a file);
 //   2. next to the program (the build directory);
 //   3. at PHOTON_IMAGE_MODULE_FROM_BIN relative to the program's folder (the installed layout,
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "image_io_abi.hpp"
+#include "png_output.hpp"
 
 #ifndef PHOTON_IMAGE_MODULE_FROM_BIN
 #define PHOTON_IMAGE_MODULE_FROM_BIN "../lib/photon"
@@ -87,14 +89,20 @@ private:
     }
 };
 
-/// photon::check_writable_image_path, through the module.
+/// photon::check_writable_image_path, through the module (a PNG file with libpng, without it).
 inline void check_writable_image_path(const std::filesystem::path& path) {
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+    if (is_png_path(path)) return detail::check_writable_location(path);
+#endif
     char error[1024] = "";
     if (ImageIoModule::get().check_writable(path.c_str(), error, sizeof error) != 0) throw ImageError(error);
 }
 
-/// photon::write_image, through the module.
+/// photon::write_image, through the module (a PNG file with libpng, without it).
 inline void write_image(const std::filesystem::path& path, const Film& film, const ImageWriteOptions& options = {}) {
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+    if (is_png_path(path)) return write_png(path, film, options);
+#endif
     std::vector<float> rgb;
     rgb.reserve(3 * film.pixels().size());
     for (const auto& p : film.pixels()) rgb.insert(rgb.end(), {p[0], p[1], p[2]});

@@ -30,28 +30,12 @@ namespace photon {
 /// Throws ImageError if `path` cannot be written as an image: unknown format, missing directory,
 /// or a directory without write permission. Call it before a long render.
 PHOTON_IMAGE_IO_INLINE void check_writable_image_path(const std::filesystem::path& path) {
-    namespace fs = std::filesystem;
     if (path.empty()) throw ImageError("output path is empty");
     auto probe = OIIO::ImageOutput::create(path.string());
     if (!probe)
         throw ImageError(path.string() + ": no image format for extension '" + path.extension().string() +
                          "' (use .png, .exr, .jpg, .tif, .hdr, ...)");
-    const fs::path dir = path.has_parent_path() ? path.parent_path() : fs::path(".");
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec))
-        throw ImageError(path.string() + ": output directory '" + dir.string() + "' does not exist");
-    if (fs::is_directory(path, ec)) throw ImageError(path.string() + ": is a directory");
-    if (::access(dir.c_str(), W_OK) != 0)
-        throw ImageError(path.string() + ": output directory '" + dir.string() + "' is not writable");
-    // access() says yes to root and knows nothing of read-only file systems: create and remove
-    // the kind of temporary file write_image will create.
-    const fs::path probe_file = detail::temporary_sibling(path);
-    const int fd = ::open(probe_file.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
-    if (fd < 0)
-        throw ImageError(path.string() + ": cannot create a file in '" + dir.string() + "': " +
-                         std::generic_category().message(errno));
-    ::close(fd);
-    ::unlink(probe_file.c_str());
+    detail::check_writable_location(path);
 }
 
 /// Writes `film` to `path` (format from the extension). Throws ImageError; on failure the file
