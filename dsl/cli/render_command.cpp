@@ -195,7 +195,7 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
             }
             if (budget && writer && r.image) {  // rank 0 alone writes
                 photon::Film film = *r.image;
-                photon::decode_working_gamma(film, built.working_gamma);
+                photon::decode_working_space(film, built.working_space);
                 photon::image_module::write_image(output, film, wo);
             }
         };
@@ -215,8 +215,8 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     photon::RenderResult result = photon::render(built.scene, built.camera, settings);
     const std::string exchanges = share ? exchange_stats(*share) : std::string();
     if (!writer) return EXIT_SUCCESS;
-    // A file with assumed_gamma G rendered numbers of a gamma-G space; the image is linear.
-    photon::decode_working_gamma(result.film, built.working_gamma);
+    // The film holds numbers of the scene's working space (POV-Ray's gamma rules); the image is linear.
+    photon::decode_working_space(result.film, built.working_space);
     const bool partial = result.stats.partial || cancel_requested.load();
     if (partial) progress.finish();
 

@@ -20,11 +20,22 @@ TEST_CASE("#default changes the texture of objects written after it", "[dsl][tex
     CHECK(b.scene.material_of(1).diffuse() == Rgb<double>(0.5));
 }
 
-TEST_CASE("assumed_gamma sets the working gamma the image is decoded from, without a warning", "[dsl][settings]") {
+TEST_CASE("assumed_gamma and #version set the working space the image is decoded from, as POV-Ray 3.7's gamma modes",
+          "[dsl][settings]") {
+    using Curve = WorkingSpace::Curve;
     std::vector<dsl::Diagnostic> w;
-    CHECK(built(std::string(stage) + "sphere { 0, 1 }\n", &w).working_gamma == 1.0f);
-    CHECK(built(std::string(stage) + "sphere { 0, 1 }\nglobal_settings { assumed_gamma 2.2 }\n", &w).working_gamma ==
-          2.2f);
+    const std::string v37 = "#version 3.7;\n", v36 = "#version 3.6;\n";
+    const auto space = [&](const std::string& text) { return built(text + std::string(stage) + "sphere { 0, 1 }\n", &w).working_space; };
+    CHECK(space(v37) == WorkingSpace{Curve::power, 1.0f});  // 3.7 without assumed_gamma: linear
+    CHECK(space(v37 + "global_settings { assumed_gamma 2.2 }\n") == WorkingSpace{Curve::power, 2.2f});
+    CHECK(space(v36 + "global_settings { assumed_gamma 2.2 }\n") == WorkingSpace{Curve::power, 2.2f});
+    CHECK(space(v36 + "global_settings { assumed_gamma 1 }\n") == WorkingSpace{Curve::power, 1.0f});
+    // Older than 3.7 without assumed_gamma: gamma handling off, numbers written as they are.
+    CHECK(space(v36).curve == Curve::srgb);
+    CHECK(space("").curve == Curve::srgb);  // no #version reads as 3.62
+    // The last #version counts: an include's `#version 3.5` restored to the 3.7 it found.
+    CHECK(space("#declare Saved = version;\n#version 3.5;\n#version Saved;\n") == WorkingSpace{Curve::power, 1.0f});
+    CHECK(space(v37 + "#version 3.6;\n").curve == Curve::srgb);
     CHECK(w.empty());
     CHECK_THROWS_WITH(built(std::string(stage) + "global_settings { assumed_gamma 0 }\nsphere { 0, 1 }\n"),
                       Contains("test.pov:") && Contains("`assumed_gamma` must be a positive number, found 0"));

@@ -23,6 +23,7 @@
 #include "build/fog.hpp"
 #include "build/sky.hpp"
 #include "build/warnings.hpp"
+#include "build/working_space.hpp"
 #include "description.hpp"
 #include "diagnostics.hpp"
 #include "image_files.hpp"
@@ -46,9 +47,9 @@ struct BuiltScene {
     DefaultScene<S> scene;
     Camera<S> camera;
     RenderSettings settings;
-    /// The file's `assumed_gamma`: the film holds numbers of that working space, and an image
-    /// written from it is first converted to linear by decode_working_gamma (film/tone_map.hpp).
-    float working_gamma = 1.0f;
+    /// The film holds numbers of this working space (POV-Ray's gamma rules: build/working_space.hpp),
+    /// and an image written from it is first converted to linear by decode_working_space.
+    WorkingSpace working_space{};
 };
 
 /// The library's scene, camera and render settings for `desc`. Throws dsl::Error with the
@@ -97,7 +98,8 @@ template <Scalar S>
     // (render() lists the same objects in RenderStats::warnings for programs using the library).
     if (settings.mode != RenderMode::rt && settings.mode != RenderMode::reference && scene_has_caustics(scene))
         for (std::uint32_t id : unaimed_specular_objects(scene)) warn(builder.object_locations()[id], unaimed_caustics_warning);
-    return BuiltScene<S>{std::move(scene), *camera, std::move(settings), float(desc.settings.assumed_gamma.value_or(1.0))};
+    return BuiltScene<S>{std::move(scene), *camera, std::move(settings),
+                         scene_working_space(desc.settings.assumed_gamma, desc.version)};
 }
 
 }  // namespace photon::dsl

@@ -34,7 +34,7 @@ inline void Parser::parse_global_settings(const Token& kw) {
             parse_settings_block(t);
         } else if (w == "assumed_gamma") {
             // assumed_gamma FLOAT: the gamma of the space the scene's colours are numbers in; the
-            // output converts to linear (BuiltScene::working_gamma), as POV-Ray 3.7 does.
+            // output converts to linear (BuiltScene::working_space), as POV-Ray 3.7 does.
             SourceLocation at;
             g.assumed_gamma = parse_float("`assumed_gamma`", &at);
             if (!(*g.assumed_gamma > 0.0) || !std::isfinite(*g.assumed_gamma))
