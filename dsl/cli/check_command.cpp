@@ -155,9 +155,16 @@ std::string settings_line(const RenderSettings& s) {
     o << s.width << " x " << s.height << ", mode " << to_string(s.mode) << ", " << s.samples_per_pixel
       << " samples per pixel";
     const bool pass_two = s.mode == RenderMode::rt || s.mode == RenderMode::pm || s.mode == RenderMode::pm_direct;
-    if (pass_two && samples_adaptively(s))
+    if (pass_two && samples_by_contrast(s)) {
+        o << " (anti-aliased where neighbours differ by " << s.aa_contrast << ": rounds of " << s.aa_samples;
+        if (s.aa_threshold > 0) o << " while noisier than " << s.aa_threshold;
+        o << ", up to " << s.aa_max_samples << ")";
+    } else if (pass_two && samples_adaptively(s)) {
         o << " (adaptive to " << s.aa_max_samples << " at threshold " << s.aa_threshold << ")";
-    o << ", ray depth " << s.max_ray_depth << ", " << s.shadow_samples << " shadow samples";
+    }
+    o << ", ray depth " << s.max_ray_depth;
+    if (pass_two && s.adc_bailout > 0) o << " (adc bailout " << s.adc_bailout << ")";
+    o << ", " << s.shadow_samples << " shadow samples";
     if (s.mode == RenderMode::sppm)
         o << "; sppm: " << s.sppm_passes << " passes of " << s.sppm_photons_per_pass << " photons, initial radius "
           << (s.sppm_initial_radius > 0 ? std::to_string(s.sppm_initial_radius) : std::string("auto"))

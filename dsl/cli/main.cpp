@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
     try {
         if (render->parsed()) {
             ro.overrides = settings.overrides();
+            if (ro.no_error_estimate) ro.overrides["pm_error_passes"] = std::uint64_t(0);
             return photon::cli::run_render(so, ro);
         }
         if (check->parsed()) return photon::cli::run_check(so, settings.overrides());

@@ -117,22 +117,6 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     if (budget && !estimates)
         std::cerr << "photon: warning: --time and --target-error apply to the pm, sppm and reference modes; mode "
                   << photon::to_string(settings.mode) << " renders once, as its settings ask\n";
-    // A budget without a pass count of its own decides when sppm stops.
-    if (budget && settings.mode == photon::RenderMode::sppm && !bo.overrides.count("sppm_passes") &&
-        !desc.settings.render.count("sppm_passes"))
-        settings.sppm_passes = photon::SettingsLimits::max_sppm_passes;
-    // pm estimates its error against a short sppm run unless told not to (integrator/pm_error.hpp):
-    // at most half its own time again, for a number the user can trust or distrust.
-    if (ro.no_error_estimate)
-        settings.pm_error_passes = 0;
-    else if (!bo.overrides.count("pm_error_passes") && !desc.settings.render.count("pm_error_passes"))
-        settings.pm_error_passes = 64;
-    // Adaptive anti-aliasing in rt and pm unless told (--aa-threshold 0 turns it off): samples go
-    // to edges and noisy gathers rather than flat walls (film/adaptive_sampling.hpp). 0.1, not a
-    // looser 0.3: on room 1 (pm, 128x96) 3.0e-3 against 4.6e-3 for 9% more time (1.7e-2 off).
-    if ((pm || settings.mode == photon::RenderMode::rt) && !bo.overrides.count("aa_threshold") &&
-        !desc.settings.render.count("aa_threshold"))
-        settings.aa_threshold = 0.1f;
     if (pm && settings.target_error > 0 && settings.pm_error_passes == 0)
         throw std::runtime_error("--target-error: pm measures its error only with its estimate (not with --no-error-estimate "
                                  "or pm_error_passes 0)");
@@ -159,7 +143,7 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
         // be stopped after, with the image's estimated error.
         settings.progress = {};
         settings.on_pass = [sppm = settings.mode == photon::RenderMode::sppm,
-                            capped = !budget || bo.overrides.count("sppm_passes") || desc.settings.render.count("sppm_passes")](
+                            capped = settings.sppm_passes < photon::SettingsLimits::max_sppm_passes](
                                const photon::PassReport& r) {
             char error[96] = "";
             if (r.error.available)

@@ -45,8 +45,8 @@ public:
                 for (const dsl::RenderModeName& m : dsl::render_mode_names) names.emplace_back(m.name);
                 option = cmd.add_option(flag, names_[i], help)->check(CLI::IsMember(names));
             }
-            // The library's default, which a scene file's setting replaces.
-            option->default_str(dsl::format_setting_value(s.field.get(RenderSettings{})));
+            // photon render's default, which a scene file's setting replaces.
+            option->default_str(dsl::program_default_text(s));
         }
     }
 

@@ -38,13 +38,16 @@ grep -q "dropped  *photons from light 1 (point light at <1.6, 0.35, 1>, [^)]*box
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/cornell.png" $tiny
 [ -s "$work/cornell.png" ] || fail "no cornell.png"
 grep -q "global map" "$work/out" || fail "no statistics table"
-# Adaptive anti-aliasing is on in rt and pm unless told: more samples than --spp in some pixels,
-# never more than --aa-max-spp; --aa-threshold 0 takes --spp everywhere.
-grep -q "^  samples per pixel  *mean [0-9.]*, most 16$" "$work/out" || { fail "pm: not adaptive by default"; grep "samples per pixel" "$work/out"; }
+# Anti-aliasing by contrast is on in rt and pm unless told: more samples than --spp in some pixels
+# (rounds of --aa-samples), never more than --aa-max-spp; --aa-contrast 0 --aa-threshold 0 takes
+# --spp everywhere.
+grep -q "^  samples per pixel  *mean [0-9.]*, most 10$" "$work/out" || { fail "pm: not anti-aliased by default"; grep "samples per pixel" "$work/out"; }
 expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/rt.exr" $tiny --mode rt --aa-max-spp 8
 grep -q "^  samples per pixel  *mean [0-9.]*, most 8$" "$work/out" || { fail "rt: --aa-max-spp 8"; grep "samples per pixel" "$work/out"; }
-expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/rt.exr" $tiny --mode rt --aa-threshold 0
-grep -q "^  samples per pixel  *mean 1.00, most 1$" "$work/out" || { fail "rt: --aa-threshold 0"; grep "samples per pixel" "$work/out"; }
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/rt.exr" $tiny --mode rt --aa-contrast 0 --aa-threshold 0
+grep -q "^  samples per pixel  *mean 1.00, most 1$" "$work/out" || { fail "rt: --aa-contrast 0 --aa-threshold 0"; grep "samples per pixel" "$work/out"; }
+expect 0 "$photon" render "$scenes/cornell.pov" -o "$work/rt.exr" $tiny --mode rt --aa-contrast 0
+grep -q "^  samples per pixel  *mean [0-9.]*, most 16$" "$work/out" || { fail "rt: --aa-contrast 0 keeps the noise rounds"; grep "samples per pixel" "$work/out"; }
 expect 1 "$photon" render "$scenes/cornell.pov" -o "$work/w.png" --aa-threshold -0.1
 grep -q "photon: error: --aa-threshold: aa threshold must be >= 0, found -0.1" "$work/err" || { fail "aa threshold bound"; cat "$work/err"; }
 expect 0 "$photon" render "$scenes/room1.pov" -o "$work/room1.exr" $tiny --mode rt -q

@@ -224,8 +224,8 @@ std::string escape_bars(std::string_view text) {
 /// The table of docs/scene-language.md, from the settings table.
 std::string docs_table() {
     std::ostringstream o;
-    o << "| in the scene file | command line | RenderSettings | default | values | what it sets |\n"
-      << "|---|---|---|---|---|---|\n";
+    o << "| in the scene file | command line | RenderSettings | library default | `photon render` default | values | what it sets |\n"
+      << "|---|---|---|---|---|---|---|\n";
     for (const RenderSetting& s : dsl::render_settings_table) {
         std::string names, scene_names;
         for (const dsl::RenderModeName& m : dsl::render_mode_names) {
@@ -258,7 +258,8 @@ std::string docs_table() {
         else
             values = (s.lo_exclusive ? "> " : ">= ") + dsl::format_number(s.lo);
         o << "| " << item << " | " << flag << " | " << s.key << " | "
-          << dsl::format_setting_value(s.field.get(photon::RenderSettings{})) << " | " << values << " | "
+          << dsl::format_setting_value(s.field.get(photon::RenderSettings{})) << " | "
+          << escape_bars(dsl::program_default_text(s)) << " | " << values << " | "
           << escape_bars(s.help) << " |\n";
     }
     return o.str();

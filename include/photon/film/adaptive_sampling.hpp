@@ -54,4 +54,19 @@ struct AdaptiveRule {
     return seen.standard_error() > rule.threshold * std::max(std::abs(seen.mean()), rule.floor);
 }
 
+/// A colour as POV-Ray compares pixels for anti-aliasing (tracetask.cpp, Antialias_Gamma 2.5):
+/// each channel encoded as v^(1/2.5), so that a step in the shadows counts about as much as an
+/// equally visible one in the highlights.
+[[nodiscard]] inline Rgb<float> contrast_encoded(const Rgb<float>& c) noexcept {
+    Rgb<float> e;
+    for (int i = 0; i < 3; ++i) e[i] = c[i] > 0.0f ? std::pow(c[i], 1.0f / 2.5f) : 0.0f;
+    return e;
+}
+
+/// How much two pixels differ, encoded by contrast_encoded: POV-Ray's Colour_Distance, the sum
+/// of the three channels' differences (its Antialias_Threshold, 0.3 by default, is a bound on it).
+[[nodiscard]] inline float colour_contrast(const Rgb<float>& a, const Rgb<float>& b) noexcept {
+    return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+}
+
 }  // namespace photon

@@ -36,13 +36,14 @@ namespace photon {
 /// light reaches a point the camera sees (walled off, or zero power), so their shadow rays
 /// would all add zero. Empty: every light is sampled. The scene's sky, if any, adds its direct
 /// light (environment_lighting; Lambertian only) by `sky_samples` shadow rays, or by its own
-/// Environment::shadow_samples when 0.
+/// Environment::shadow_samples when 0; `sky_light` false leaves it out (rt, as POV-Ray's ray
+/// tracing, where the sky lights diffuse surfaces only under radiosity).
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
                                      const Vec3<S>& n, const Vec3<S>& geometric_n, const Vec3<S>& wo,
                                      const Material<S>& material,
                                      const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {},
-                                     unsigned sky_samples = 0) {
+                                     unsigned sky_samples = 0, bool sky_light = true) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = albedo * inv_pi<S>;
     const bool highlights = material.has_highlight();
@@ -92,7 +93,7 @@ template <class SceneT, Scalar S>
         total += sum / S(count);
     }
     if constexpr (requires { scene.environment(); })
-        if (scene.has_environment_light() && material.has_diffuse())
+        if (sky_light && scene.has_environment_light() && material.has_diffuse())
             total += environment_lighting(scene, *scene.environment(), shadow_origin, n, geometric_n, albedo, ctx, sky_samples);
     return total;
 }

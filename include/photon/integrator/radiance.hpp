@@ -40,8 +40,10 @@ public:
         : scene_(scene), maps_(maps), settings_(with_estimate_radii(settings, maps)),
           lights_reaching_(std::move(lights_reaching)) {}
 
-    /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray.
-    [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx) const {
+    /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray; `weight`
+    /// is the largest channel of what the ray's radiance is multiplied by in the pixel (1 for a
+    /// camera ray), which POV-Ray's adc_bailout compares (RenderSettings::adc_bailout).
+    [[nodiscard]] Rgb<S> radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx, S weight = S(1)) const {
         const auto surface = scene_.intersect(ray);
         if (!surface) {
             Rgb<S> sky = sky_seen(scene_, ray.direction);
@@ -62,9 +64,9 @@ public:
             const Rgb<S> albedo = material.diffuse_at(x) * gain;
             const Rgb<S> brdf = albedo * inv_pi<S>;
             switch (settings_.mode) {
-            case RenderMode::rt:
+            case RenderMode::rt:  // the sky is seen, but lights nothing: POV-Ray's ambient stands in
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
-                                          settings_.shadow_samples, ctx, lights_reaching_);
+                                          settings_.shadow_samples, ctx, lights_reaching_, 0, false);
                 break;
             case RenderMode::pm:
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
@@ -85,7 +87,7 @@ public:
             }
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
-            result += gain * specular(ray, *surface, f, error, depth, ctx, false);
+            result += gain * specular(ray, *surface, f, error, depth, ctx, false, weight * gain);
         result *= segment_transmittance(material, f, surface->hit.t);  // absorbed inside coloured glass
         if (const auto media = media_seen(scene_, ray, surface, &f, ctx)) result = media->apply(result);
         const auto fog = fog_seen(scene_, ray, surface, &f);
@@ -93,10 +95,12 @@ public:
     }
 
 private:
-    /// Mirror and refraction continuations, each weighted by its reflectance at this hit.
+    /// Mirror and refraction continuations, each weighted by its reflectance at this hit, each
+    /// traced only where its weight in the pixel (`weight` times its reflectance's largest channel)
+    /// is at least adc_bailout, as POV-Ray traces them (trace.cpp: a ray below it is black).
     /// `gathering`: the rays belong to a final gather and end in the global map.
     [[nodiscard]] Rgb<S> specular(const Ray<S>& ray, const SurfaceHit<S>& surface, const Facing<S>& f, S error,
-                                  unsigned depth, ShadingContext& ctx, bool gathering) const {
+                                  unsigned depth, ShadingContext& ctx, bool gathering, S weight) const {
         const Material<S>& material = *surface.material;
         const Vec3<S>& x = surface.hit.point;
         const Scattering<S> s = material.scattering(x, f.shading_cos, f.entering);
@@ -104,23 +108,30 @@ private:
         Rgb<S> reflected_weight = s.specular;
         if (!is_black(s.transmission)) {
             if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering))) {
-                if (gathering) ++ctx.rays.gather; else ++ctx.rays.refraction;
-                const Ray<S> next{offset_origin(x, -f.normal, error), *refracted};
-                result += s.transmission * trace(next, depth + 1, ctx, gathering);
+                const S w = weight * max_component(s.transmission);
+                if (traced(w)) {
+                    if (gathering) ++ctx.rays.gather; else ++ctx.rays.refraction;
+                    const Ray<S> next{offset_origin(x, -f.normal, error), *refracted};
+                    result += s.transmission * trace(next, depth + 1, ctx, gathering, w);
+                }
             } else {
                 reflected_weight += s.transmission;  // total internal reflection
             }
         }
-        if (!is_black(reflected_weight)) {
+        const S w = weight * max_component(reflected_weight);
+        if (!is_black(reflected_weight) && traced(w)) {
             if (gathering) ++ctx.rays.gather; else ++ctx.rays.reflection;
             const Ray<S> next{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)};
-            result += reflected_weight * trace(next, depth + 1, ctx, gathering);
+            result += reflected_weight * trace(next, depth + 1, ctx, gathering, w);
         }
         return result;
     }
 
-    [[nodiscard]] Rgb<S> trace(const Ray<S>& ray, unsigned depth, ShadingContext& ctx, bool gathering) const {
-        return gathering ? gathered_radiance(ray, depth, ctx) : radiance(ray, depth, ctx);
+    /// Whether a ray of weight `w` in its pixel is traced (adc_bailout 0: always).
+    [[nodiscard]] bool traced(S w) const noexcept { return w >= S(settings_.adc_bailout); }
+
+    [[nodiscard]] Rgb<S> trace(const Ray<S>& ray, unsigned depth, ShadingContext& ctx, bool gathering, S weight) const {
+        return gathering ? gathered_radiance(ray, depth, ctx, nullptr, weight) : radiance(ray, depth, ctx, weight);
     }
 
     /// Irradiance from one map at `x`, with the thin-wall probes if the settings ask for them.
@@ -205,7 +216,7 @@ public:
     /// Calls visit(x, n, geometric_n, path_length) for every diffuse hit of the camera ray and of the mirror
     /// and glass rays it spawns (as radiance() would shade them), with x already offset.
     template <class Visit>
-    void for_each_diffuse_hit(const Ray<S>& ray, unsigned depth, S path_length, Visit&& visit) const {
+    void for_each_diffuse_hit(const Ray<S>& ray, unsigned depth, S path_length, Visit&& visit, S weight = S(1)) const {
         const auto surface = scene_.intersect(ray);
         if (!surface) return;
         const Material<S>& material = *surface->material;
@@ -216,16 +227,21 @@ public:
         if (material.has_diffuse()) visit(offset_origin(x, f.normal, error), f.shading, f.normal, length);
         if (depth >= settings_.max_ray_depth || !material.is_specular()) return;
         const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);
-        bool reflect_too = !is_black(sc.specular);
+        const S gain = material.seen_gain();
+        Rgb<S> reflected_weight = sc.specular;
         if (!is_black(sc.transmission)) {
-            if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering)))
-                for_each_diffuse_hit(Ray<S>{offset_origin(x, -f.normal, error), *refracted}, depth + 1, length, visit);
-            else
-                reflect_too = true;
+            if (const auto refracted = refraction_direction(ray.direction, f, relative_eta(material, f.entering))) {
+                const S w = weight * gain * max_component(sc.transmission);
+                if (traced(w))
+                    for_each_diffuse_hit(Ray<S>{offset_origin(x, -f.normal, error), *refracted}, depth + 1, length, visit, w);
+            } else {
+                reflected_weight += sc.transmission;
+            }
         }
-        if (reflect_too)
+        const S w = weight * gain * max_component(reflected_weight);
+        if (!is_black(reflected_weight) && traced(w))
             for_each_diffuse_hit(Ray<S>{offset_origin(x, f.normal, error), mirror_direction(ray.direction, f)}, depth + 1,
-                                 length, visit);
+                                 length, visit, w);
     }
 
 private:
@@ -233,7 +249,7 @@ private:
     /// mirrors and glass.
     /// `distance`, if given, receives the distance to the first hit.
     [[nodiscard]] Rgb<S> gathered_radiance(const Ray<S>& ray, unsigned depth, ShadingContext& ctx,
-                                           S* distance = nullptr) const {
+                                           S* distance = nullptr, S weight = S(1)) const {
         const auto surface = scene_.intersect(ray);
         if (!surface) return Rgb<S>(S(0));
         if (distance) *distance = surface->hit.t;
@@ -250,7 +266,7 @@ private:
             result += material.diffuse_at(surface->hit.point) * inv_pi<S> * irradiance;
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
-            result += specular(ray, *surface, f, error, depth, ctx, true);
+            result += specular(ray, *surface, f, error, depth, ctx, true, weight);
         return result * segment_transmittance(material, f, surface->hit.t) *
                media_transmittance_seen(scene_, ray, surface, &f, ctx.rng);
     }

@@ -78,7 +78,19 @@ struct RenderSettings {
     /// line uses 0.1 in rt and pm).
     float aa_threshold = 0.0f;
     unsigned aa_max_samples = 16;
+    /// rt, pm and pm-direct: anti-aliasing by contrast, as POV-Ray's +A (its method 1). Every pixel
+    /// takes its `samples_per_pixel`; one whose colour differs from a neighbour's by at least this
+    /// (film/adaptive_sampling.hpp: colour_contrast, POV-Ray's Antialias_Threshold) takes rounds of
+    /// `aa_samples` more, the first always, more while aa_threshold finds it noisy, up to
+    /// `aa_max_samples` in all. 0: off (the library's default; the command line uses 0.3).
+    float aa_contrast = 0.0f;
+    unsigned aa_samples = 9;  ///< a supersampling round (POV-Ray's Antialias_Depth 3: 3 x 3)
     unsigned max_ray_depth = 4;      ///< primary ray = 1; a mirror seen in a mirror is depth 3
+    /// rt and pm: a mirror or glass ray whose weight in its pixel (the largest channel of the
+    /// product of the reflectances on its way) is below this is not traced, as POV-Ray's
+    /// adc_bailout (trace.cpp); what it would bring is at most that fraction of the pixel's light.
+    /// 0: every ray to max_ray_depth (the library's default; the command line uses POV-Ray's 1/255).
+    float adc_bailout = 0.0f;
     unsigned shadow_samples = 16;    ///< per area light and shading point; rounded up to n x n strata
 
     std::size_t global_photons = 200'000;   ///< emitted for the global map
@@ -184,6 +196,9 @@ inline void validate(const RenderSettings& s) {
     in_range(s.samples_per_pixel, SettingsLimits::max_samples, "samples per pixel");
     if (!(s.aa_threshold >= 0.0f) || !std::isfinite(s.aa_threshold)) fail("aa threshold must be finite and >= 0 (0: off)");
     in_range(s.aa_max_samples, SettingsLimits::max_samples, "aa max samples");
+    if (!(s.aa_contrast >= 0.0f) || !std::isfinite(s.aa_contrast)) fail("aa contrast must be finite and >= 0 (0: off)");
+    in_range(s.aa_samples, SettingsLimits::max_samples, "aa samples");
+    if (!(s.adc_bailout >= 0.0f) || !(s.adc_bailout <= 1.0f)) fail("adc bailout must be in [0, 1] (0: off)");
     in_range(s.max_ray_depth, SettingsLimits::max_ray_depth, "max ray depth");
     in_range(s.shadow_samples, SettingsLimits::max_samples, "shadow samples");
     in_range(s.max_photon_depth, SettingsLimits::max_photon_depth, "max photon depth");

@@ -32,6 +32,10 @@ namespace photon::dsl {
 
 struct BuildOptions {
     SettingsOverrides overrides;
+    /// Settings neither the file nor `overrides` writes take `photon render`'s defaults (the
+    /// settings table's program_default: POV-Ray's anti-aliasing, the mode the file asks for...);
+    /// false: the library's (RenderSettings' initializers).
+    bool program_defaults = true;
     DiagnosticSink diagnostics;
     /// Objects and mesh triangles in the scene, the mesh files' triangles counted for every use
     /// (the parser bounds the rest with ParseOptions::max_primitives, the same default).
@@ -60,17 +64,13 @@ template <Scalar S>
     ImageFiles images(options.read_image, ImageDecoding{desc.settings.assumed_gamma, desc.version});
     detail::Builder<S> builder(desc, warn, options.max_primitives, images);
     builder.read_files();
-    RenderSettings settings = render_settings(desc, options.overrides, warn);
+    RenderSettings settings = render_settings(desc, options.overrides, warn, options.program_defaults);
     CameraDescription cam;
     if (desc.camera)
         cam = *desc.camera;
     else
         warn(desc.at, "no camera: using POV-Ray's default camera at the origin looking along +z");
     const ResolvedCamera rc = resolve_camera(cam, double(settings.width) / double(settings.height), &warn);
-    // Focal blur's samples are the render's samples per pixel, unless the file or caller sets those.
-    if (rc.blur_samples && !desc.settings.render.count("samples_per_pixel") && !options.overrides.count("samples_per_pixel"))
-        settings.samples_per_pixel =
-            std::max(settings.samples_per_pixel, std::min<unsigned>(rc.blur_samples, SettingsLimits::max_samples));
     std::optional<Camera<S>> camera;
     try {
         camera.emplace(camera_projection(rc.type),

@@ -621,11 +621,10 @@ struct WrittenSetting {
 struct GlobalSettings {
     std::optional<double> assumed_gamma;
     Vector3 ambient_light{1.0};
-    std::optional<double> adc_bailout;
     bool radiosity = false;
     std::optional<PovPhotons> photons;
     /// The settings of the settings table (photon's own items, inside `#ifdef (photon_version)`,
-    /// and POV-Ray's max_trace_level), by the RenderSettings field each one sets
+    /// and POV-Ray's max_trace_level and adc_bailout), by the RenderSettings field each one sets
     /// ("samples_per_pixel", "global_estimate.k").
     std::map<std::string, WrittenSetting> render;
     std::map<std::string, SourceLocation> written;  ///< every item, photon's own ones included

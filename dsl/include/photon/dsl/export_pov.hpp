@@ -96,7 +96,6 @@ private:
         if (g.assumed_gamma) out_ << "  assumed_gamma " << num(*g.assumed_gamma) << '\n';
         if (g.written.count("ambient_light")) out_ << "  ambient_light rgb " << vec(g.ambient_light) << '\n';
         table_items(g, true, out_);
-        if (g.adc_bailout) out_ << "  adc_bailout " << num(*g.adc_bailout) << '\n';
         if (g.photons) {
             const PovPhotons& p = *g.photons;
             out_ << "  photons {";

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // global_settings: POV-Ray's own items, its photons block, and the items of the settings table
-// (settings_table.hpp: photon's own settings and POV-Ray's max_trace_level).
+// (settings_table.hpp: photon's own settings and POV-Ray's max_trace_level and adc_bailout).
 
 #include "degradation.hpp"
 #include "parser_class.hpp"
@@ -41,8 +41,6 @@ inline void Parser::parse_global_settings(const Token& kw) {
                 fail(at, "`assumed_gamma` must be a positive number, found " + format_number(*g.assumed_gamma));
         } else if (w == "ambient_light") {
             g.ambient_light = to_color(parse_expression_for("the ambient light colour")).rgb;
-        } else if (w == "adc_bailout") {
-            g.adc_bailout = parse_nonnegative("`adc_bailout`");
         } else if (w == "radiosity") {
             skip_block(t);
             g.radiosity = true;
