@@ -5,8 +5,9 @@
 #                            in it; photon reads its samples), clang for
 #                            the sanitizer build and the fuzzer
 #   install-deps.sh bench    test + Google Benchmark, nanoflann, Embree, OpenImageIO tools
-#   install-deps.sh compare  render + POV-Ray (scripts/compare-povray.sh) and matplotlib for
-#                            Debian's /usr/bin/python3 (the plot of scripts/accuracy-study.sh)
+#   install-deps.sh compare  render + POV-Ray and its sample scenes (scripts/compare-povray.sh,
+#                            scripts/pov-corpus.py), matplotlib, NumPy and Pillow for Debian's
+#                            /usr/bin/python3 (the plots, the corpus's image comparison)
 # Uses sudo only when not already root. Packages already present are not reinstalled.
 set -euo pipefail
 
@@ -15,7 +16,7 @@ purpose=${1:-render}
 render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev libfreetype-dev libpng-dev)
 test=("${render[@]}" catch2 povray povray-examples clang libclang-rt-14-dev libopenmpi-dev openmpi-bin)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
-compare=("${render[@]}" povray python3-matplotlib)
+compare=("${render[@]}" povray povray-examples python3-matplotlib python3-numpy python3-pil)
 case "$purpose" in
   render) packages=("${render[@]}") ;;
   test) packages=("${test[@]}") ;;

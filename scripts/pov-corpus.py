@@ -1,272 +1,139 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # SPDX-License-Identifier: MIT
-"""POV-Ray 3.7's sample scenes through photon: which parse, which render, and what stops the rest.
+"""POV-Ray 3.7's sample scenes through photon and, where POV-Ray is installed, POV-Ray itself.
 
 Runs `photon check` on every .pov file of Debian's povray-examples (396 scenes), then renders
-each one that passes at 160x120 under a time limit, and writes docs/pov-compatibility.md: the
-headline counts, the warnings by kind, the first error of every scene that fails, and the list
-of scenes that pass (tests/dsl/pov_corpus_subset.txt, which the test suite re-checks).
+each scene with POV-Ray (cached between runs) and with photon at the same size on the same
+machine, one render at a time, both on 2 threads: POV-Ray with +A0.3 and the file's own
+settings, photon with its defaults (which choose rt for a file without radiosity or photons, pm
+for one with). It compares the images on 8x8-pixel block means (scripts/pov_corpus/compare.py),
+measures the CPU time of each whole command, and writes docs/pov-compatibility.md: the counts,
+the CPU-time ratios, the warnings by kind, what stops the scenes that fail, every scene's row,
+and contact sheets of the scenes that differ (docs/images/pov-corpus/). It also writes the list
+of scenes that pass check (tests/dsl/pov_corpus_subset.txt, which the test suite re-checks).
 
-  scripts/pov-corpus.py build/photon [--render-seconds 60] [--jobs 2] [--no-render]
+  scripts/pov-corpus.py build/photon                  # the whole comparison (hours: POV-Ray's cache first)
+  scripts/pov-corpus.py build/photon --no-render      # check only (any python3)
+  scripts/pov-corpus.py build/photon --only 'camera/*' --report-only ...
 
-Each scene is read from its own directory, as POV-Ray's sample scenes expect; the standard
-includes are found where photon finds them (/usr/share/povray-3.7/include). An animation scene
-is read as the first frame of its companion .ini file (the one in its directory that names it in
-Input_File_Name, else the one with its stem): its frame range, clock range and cyclic flag become
-photon's --frames and --clock-range, a Clock= value --clock. Uses only the standard library, so
-any python3 runs it.
+Each scene is read from its own directory, as POV-Ray's sample scenes expect, in a copy of the
+examples (--work) so that scenes which write files write them there. An animation scene is read
+as the first frame of its companion .ini file. The renders need NumPy and Pillow (Debian's
+python3-numpy and python3-pil for /usr/bin/python3).
 """
 import argparse
-import collections
 import concurrent.futures
+import datetime
+import fnmatch
+import json
 import os
-import re
+import platform
+import shutil
 import subprocess
 import sys
-import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pov_corpus import photon_runs, povray, report, scenes  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DIAGNOSTIC = re.compile(r"^(?P<loc>[^\s:][^:]*:\d+:\d+): (?P<sev>warning|error): (?P<msg>.*)$")
 
 
-def find_examples():
-    """The examples folder of povray-examples, from dpkg when it is installed."""
+def machine():
+    cpu = ""
     try:
-        files = subprocess.run(["dpkg", "-L", "povray-examples"], capture_output=True, text=True, check=True)
-        povs = [f for f in files.stdout.split("\n") if f.endswith(".pov")]
-        if povs:
-            return os.path.commonpath(povs)
-    except (OSError, subprocess.CalledProcessError):
+        for line in subprocess.run(["lscpu"], capture_output=True, text=True).stdout.split("\n"):
+            if line.startswith("Model name:"):
+                cpu = line.split(":", 1)[1].strip()
+    except OSError:
         pass
-    return "/usr/share/doc/povray/examples"
-
-
-def run(cmd, cwd, seconds):
-    start = time.monotonic()
-    try:
-        p = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace", timeout=seconds)
-        return p.returncode, p.stderr, time.monotonic() - start
-    except subprocess.TimeoutExpired as e:
-        err = e.stderr.decode(errors="replace") if isinstance(e.stderr, bytes) else (e.stderr or "")
-        return None, err, time.monotonic() - start
-
-
-def diagnostics(stderr):
-    out = []
-    for line in stderr.split("\n"):
-        m = DIAGNOSTIC.match(line)
-        if m:
-            out.append((m.group("sev"), m.group("loc"), m.group("msg")))
-    return out
-
-
-def warning_kind(message):
-    """A warning without its particulars (numbers, quoted file names), for counting by kind."""
-    kind = re.sub(r"\"[^\"]*\"", '"..."', message)
-    kind = re.sub(r"-?\d+(\.\d+)?(e[-+]?\d+)?", "N", kind)
-    kind = re.sub(r" at (\S+:)?N:N", " at ...", kind)
-    return kind
-
-
-def first_error(stderr):
-    for sev, loc, msg in diagnostics(stderr):
-        if sev == "error":
-            return loc, msg
-    lines = [l for l in stderr.split("\n") if l.strip()]
-    return "", (lines[-1] if lines else "no message")
-
-
-def read_ini(path):
-    """POV-Ray's animation options of an .ini file: {option: value} for the keys photon takes."""
-    keys = {"initial_frame": "KFI", "final_frame": "KFF", "initial_clock": "KI", "final_clock": "KF",
-            "clock": "K", "cyclic_animation": "KC", "input_file_name": "input"}
-    out = {}
-    for line in open(path, errors="replace"):
-        line = line.split(";", 1)[0].strip()
-        if "=" in line:
-            key, value = (x.strip() for x in line.split("=", 1))
-            if key.lower() in keys and value:
-                out[keys[key.lower()]] = value
-        for switch in line.split():  # +KFF10, +KI0, +KC, ... (longest prefix first)
-            m = re.match(r"^[+-](KFI|KFF|KC|KI|KF|K)(.*)$", switch, re.I)
-            if m:
-                opt = m.group(1).upper()
-                out[opt] = ("on" if switch[0] == "+" else "off") if opt == "KC" else m.group(2)
-    return out
-
-
-def companion_ini(scene):
-    """The .ini file that renders `scene`: the one naming it in Input_File_Name, else its stem's."""
-    folder, name = os.path.split(scene)
-    inis = sorted(f for f in os.listdir(folder) if f.lower().endswith(".ini"))
-    for f in inis:
-        if read_ini(os.path.join(folder, f)).get("input", "").lower() == name.lower():
-            return os.path.join(folder, f)
-    stem = os.path.splitext(name)[0].lower()
-    same = [f for f in inis if os.path.splitext(f)[0].lower() == stem]
-    return os.path.join(folder, same[0]) if same else None
-
-
-def animation_options(scene):
-    """photon's options for the first frame of the scene's companion .ini (none without one)."""
-    ini = companion_ini(scene)
-    if not ini:
-        return []
-    o = read_ini(ini)
-    try:
-        if "KFF" in o:
-            first, last = int(o.get("KFI", "1")), int(o["KFF"])
-            if o.get("KC", "off").lower() in ("on", "true", "yes", "1"):
-                last += 1  # POV-Ray's cyclic animation: one more frame, which it does not render
-            return ["--frames", "%d:%d" % (first, last),
-                    "--clock-range", "%s:%s" % (float(o.get("KI", "0")), float(o.get("KF", "1")))]
-        if "K" in o:
-            return ["--clock", str(float(o["K"]))]
-    except ValueError:  # an unfilled template (portfolio/__empty.ini)
-        pass
-    return []
-
-
-def check(photon, scene):
-    code, err, secs = run([photon, "check", os.path.basename(scene)] + animation_options(scene),
-                          os.path.dirname(scene), 120)
-    return {"code": code, "stderr": err, "check_seconds": secs}
-
-
-def render(photon, scene, out_dir, seconds):
-    name = os.path.splitext(os.path.basename(scene))[0]
-    image = os.path.join(out_dir, name + ".png")
-    cmd = [photon, "render", os.path.basename(scene), "-o", image, "--width", "160", "--height", "120",
-           "--threads", "1", "--no-stats", "-q"] + animation_options(scene)
-    code, err, secs = run(cmd, os.path.dirname(scene), seconds)
-    return {"render_code": code, "render_stderr": err, "render_seconds": secs}
-
-
-def render_status(r):
-    code = r.get("render_code")
-    if code == 0:
-        return "rendered"
-    if code is None:
-        return "time limit"
-    if code < 0:
-        return "crashed (signal %d)" % -code
-    return "error"
+    return "%s, %d cores, %s" % (cpu or platform.processor(), os.cpu_count() or 0, platform.platform(terse=True))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("photon")
     ap.add_argument("--examples", default=None)
-    ap.add_argument("--render-seconds", type=float, default=60)
-    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    ap.add_argument("--no-render", action="store_true")
-    ap.add_argument("--render-every", type=int, default=1,
-                    help="render every K-th scene that passes check (a systematic sample when time is short)")
+    ap.add_argument("--width", type=int, default=320)
+    ap.add_argument("--height", type=int, default=240)
+    ap.add_argument("--threads", type=int, default=2, help="threads of each render (both programs)")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="checks at a time (renders run one at a time)")
+    ap.add_argument("--photon-seconds", type=float, default=300, help="photon's time limit per render")
+    ap.add_argument("--povray-seconds", type=float, default=600, help="POV-Ray's time limit per render")
+    ap.add_argument("--no-render", action="store_true", help="check only")
+    ap.add_argument("--no-povray", action="store_true", help="render with photon only")
+    ap.add_argument("--only", action="append", default=[], help="render only scenes matching this glob (repeatable)")
+    ap.add_argument("--report-only", action="store_true", help="rewrite the report from the last run's results")
+    ap.add_argument("--judge", action="store_true",
+                    help="also the radiosity scenes against photon's sppm judge, and POV-Ray at +Q8 against photon rt")
     ap.add_argument("--work", default="/tmp/photon-pov-corpus")
+    ap.add_argument("--cache", default=os.path.join(os.environ.get("XDG_CACHE_HOME", os.path.expanduser("~/.cache")),
+                                                    "photon", "pov-corpus"))
     ap.add_argument("--out", default=os.path.join(ROOT, "docs", "pov-compatibility.md"))
+    ap.add_argument("--sheets", default=os.path.join(ROOT, "docs", "images", "pov-corpus"))
     ap.add_argument("--subset", default=os.path.join(ROOT, "tests", "dsl", "pov_corpus_subset.txt"))
     a = ap.parse_args()
+    results_file = os.path.join(a.work, "results.json")
+    if a.report_only:
+        with open(results_file) as f:
+            run = json.load(f)
+        report.write(a, run)
+        return
     photon = os.path.abspath(a.photon)
-    examples = a.examples or find_examples()
-    scenes = sorted(os.path.join(d, f) for d, _, fs in os.walk(examples) for f in fs if f.endswith(".pov"))
-    if not scenes:
-        sys.exit("pov-corpus: no .pov files under %s (install povray-examples)" % examples)
-    os.makedirs(a.work, exist_ok=True)
-    results = {}
+    source = a.examples or scenes.find_examples()
+    if not scenes.list_scenes(source):
+        sys.exit("pov-corpus: no .pov files under %s (install povray-examples)" % source)
+    # A copy: scenes that write files (#fopen ... write) write them beside the copy.
+    examples = os.path.join(a.work, "examples")
+    if not os.path.isdir(examples):
+        shutil.copytree(source, examples)
+    all_scenes = scenes.list_scenes(examples)
+    rel = lambda s: os.path.relpath(s, examples)
+    run = {"date": datetime.date.today().isoformat(), "machine": machine(), "examples": source,
+           "width": a.width, "height": a.height, "threads": a.threads, "rendered": not a.no_render,
+           "povray": None, "photon_seconds": a.photon_seconds, "povray_seconds": a.povray_seconds,
+           "scenes": {}}
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
-        for scene, r in zip(scenes, pool.map(lambda s: check(photon, s), scenes)):
-            results[scene] = r
-        passed = [s for s in scenes if results[s]["code"] == 0]
-        print("pov-corpus: %d of %d scenes pass photon check" % (len(passed), len(scenes)), file=sys.stderr)
-        if not a.no_render:
-            sample = passed[::max(1, a.render_every)]
-            for scene, r in zip(sample, pool.map(lambda s: render(photon, s, a.work, a.render_seconds), sample)):
-                results[scene].update(r)
-    write_report(a, examples, scenes, results)
-    write_subset(a.subset, examples, [s for s in scenes if results[s]["code"] == 0])
+        for s, r in zip(all_scenes, pool.map(lambda s: photon_runs.check(photon, s), all_scenes)):
+            run["scenes"][rel(s)] = {"check": r}
+    passed = [s for s in all_scenes if run["scenes"][rel(s)]["check"]["code"] == 0]
+    print("pov-corpus: %d of %d scenes pass photon check" % (len(passed), len(all_scenes)), file=sys.stderr)
+    if not a.no_render:
+        chosen = [s for s in all_scenes if not a.only or any(fnmatch.fnmatch(rel(s), g) for g in a.only)]
+        version = None if a.no_povray else povray.version()
+        run["povray"] = version
+        cache = povray.cache_folder(a.cache, a.width, a.height)
+        for i, s in enumerate(chosen):
+            entry = run["scenes"][rel(s)]
+            if version:
+                entry["povray"] = povray.render(s, rel(s), cache, a.width, a.height, a.povray_seconds, a.threads)
+            if entry["check"]["code"] == 0:
+                image = os.path.join(a.work, "photon", rel(s)[:-4] + ".png")
+                r = photon_runs.render(photon, s, image, a.width, a.height, a.photon_seconds, a.threads)
+                entry["photon"] = {k: r[k] for k in ("code", "cpu", "wall", "image")}
+                entry["photon"]["stderr_tail"] = "\n".join(r["stderr"].strip().split("\n")[-5:])
+            if version and entry.get("photon", {}).get("image") and entry["povray"].get("image"):
+                from pov_corpus import compare
+                entry["difference"] = compare.difference(entry["povray"]["image"], entry["photon"]["image"])
+            print("pov-corpus: [%d/%d] %s %s" % (i + 1, len(chosen), rel(s), report.row_summary(entry)),
+                  file=sys.stderr, flush=True)
+        if a.judge and version:
+            from pov_corpus import judge
+            judge.radiosity_rows(a, photon, examples, run, rel)
+    os.makedirs(a.work, exist_ok=True)
+    with open(results_file, "w") as f:
+        json.dump(run, f, indent=1)
+    report.write(a, run)
+    write_subset(a.subset, examples, run)
 
 
-def write_subset(path, examples, passed):
+def write_subset(path, examples, run):
     """The scenes that pass, each with the animation options it was checked with."""
     with open(path, "w") as f:
         f.write("# POV-Ray 3.7 sample scenes that pass photon check (written by scripts/pov-corpus.py), each\n"
                 "# with the options of its .ini's first frame; tests/dsl/pov_corpus_test.sh checks that they still do.\n")
-        f.writelines(" ".join([os.path.relpath(s, examples)] + animation_options(s)) + "\n" for s in passed)
-
-
-def write_report(a, examples, scenes, results):
-    n = len(scenes)
-    passed = [s for s in scenes if results[s]["code"] == 0]
-    crashed = [s for s in scenes if results[s]["code"] is not None and results[s]["code"] < 0]
-    tried = [s for s in passed if "render_code" in results[s]]
-    rendered = [s for s in tried if render_status(results[s]) == "rendered"]
-    timed = [s for s in tried if render_status(results[s]) == "time limit"]
-    clean = [s for s in passed if not diagnostics(results[s]["stderr"])]
-    kinds = collections.Counter()
-    kind_scenes = collections.defaultdict(set)
-    for s in scenes:
-        for sev, _, msg in diagnostics(results[s]["stderr"]):
-            if sev == "warning":
-                k = warning_kind(msg)
-                kinds[k] += 1
-                kind_scenes[k].add(s)
-    errors = collections.Counter()
-    for s in scenes:
-        if results[s]["code"] != 0:
-            errors[warning_kind(first_error(results[s]["stderr"])[1])] += 1
-    rel = lambda s: os.path.relpath(s, examples)
-    L = []
-    L.append("# POV-Ray's sample scenes in photon\n")
-    L.append("Written by `scripts/pov-corpus.py` (do not edit by hand): every `.pov` file of Debian's "
-             "`povray-examples` (POV-Ray 3.7, `%s`) read by `photon check` from its own directory, with "
-             "the standard includes of `povray-includes`; %s\n" % (examples,
-             "no render in this run (`--no-render`)." if a.no_render else
-             "each scene that passes rendered at 160x120 (`photon render`, default mode, one thread, %g s limit)."
-             % a.render_seconds))
-    L.append("| | scenes | share |\n|---|---:|---:|")
-    row = lambda name, k, of=n: L.append("| %s | %d | %.0f%% |" % (name, k, 100.0 * k / of))
-    row("sample scenes", n)
-    row("pass `photon check`", len(passed))
-    row("pass with no warning", len(clean))
-    if not a.no_render:
-        if len(tried) < len(passed):
-            L.append("| rendered: every %d-th scene that passes, %d scenes | %d | |" % (a.render_every, len(tried), len(tried)))
-        # shares of the scenes rendered, not of all: a sample's count says nothing of the rest
-        row("render at 160x120 (share of those rendered)", len(rendered), max(len(tried), 1))
-        row("hit the render time limit (share of those rendered)", len(timed), max(len(tried), 1))
-    row("crash (must be 0)", len(crashed))
-    L.append("")
-    L.append("## Warnings by kind\n")
-    L.append("What photon skipped or approximated, over all scenes (a warning counted once per place). Notes "
-             "(a scene without light sources that shows what POV-Ray shows, the scene's own `#warning`) report no "
-             "approximation and are not counted.\n")
-    L.append("| warning | times | scenes |\n|---|---:|---:|")
-    for k, c in kinds.most_common(40):
-        L.append("| %s | %d | %d |" % (k.replace("|", "\\|"), c, len(kind_scenes[k])))
-    L.append("")
-    L.append("## What stops the scenes that fail\n")
-    L.append("| first error | scenes |\n|---|---:|")
-    for k, c in errors.most_common(40):
-        L.append("| %s | %d |" % (k.replace("|", "\\|"), c))
-    L.append("")
-    L.append("## Every scene\n")
-    L.append("| scene | check | render | first error |\n|---|---|---|---|")
-    for s in scenes:
-        r = results[s]
-        ok = r["code"] == 0
-        check_text = ("ok, %d warnings" % len(diagnostics(r["stderr"]))) if ok else (
-            "time limit" if r["code"] is None else ("crash" if r["code"] < 0 else "error"))
-        render_text = "" if not ok or "render_code" not in r else "%s (%.0f s)" % (render_status(r), r["render_seconds"])
-        err = ""
-        if not ok:
-            loc, msg = first_error(r["stderr"])
-            err = ("`%s` " % loc if loc else "") + msg
-        elif "render_code" in r and render_status(r) == "error":
-            loc, msg = first_error(r.get("render_stderr", ""))
-            err = "render: " + msg
-        L.append("| %s | %s | %s | %s |" % (rel(s), check_text, render_text, err.replace("|", "\\|")))
-    with open(a.out, "w") as f:
-        f.write("\n".join(L) + "\n")
+        for name in sorted(run["scenes"]):
+            if run["scenes"][name]["check"]["code"] == 0:
+                f.write(" ".join([name] + scenes.photon_options(os.path.join(examples, name))) + "\n")
 
 
 if __name__ == "__main__":
