@@ -258,3 +258,20 @@ TEST_CASE("a scene's data is bounded in bytes and its reading in seconds", "[dsl
     seconds.max_parse_seconds = 0;  // no limit
     CHECK(error_of("#declare I = 0;\n#while (I < 1e3) #declare I = I + 1; #end\nsphere { 0, 1 }\n", seconds).empty());
 }
+
+TEST_CASE("the hostile files of issue 48 each end in a located error", "[dsl][errors][limits]") {
+    const std::string end = "\nsphere { 0, 1 }\n";
+    // Each error is located (line:column) and names the limit it reached.
+    CHECK_THAT(error_of("#declare I = 0;\n#while (I < 1e12) #declare I = I + 1; #end" + end),
+               Contains("2:1: `#while` loop ran more than 1000000 times"));
+    CHECK_THAT(error_of("#macro M() M() #end\nM()" + end), Contains("macro calls nested too deep") || Contains("recursion"));
+    CHECK_THAT(error_of("#declare S = \"ab\";\n#while (1) #declare S = concat(S, S); #end" + end),
+               Contains("string too long"));
+    CHECK_THAT(error_of("#declare A = array[2e9];" + end), Contains("1:20: ") && Contains("array"));
+    CHECK_THAT(error_of("#declare F = function(x) { F(x) }" + end), Contains("1:28: "));
+    CHECK_THAT(error_of("#include \"/dev/urandom\"" + end), Contains("1:10: reading \"/dev/urandom\" is not permitted"));
+    CHECK_THAT(error_of("#include \"/etc/passwd\"" + end), Contains("1:10: reading \"/etc/passwd\" is not permitted"));
+    dsl::ParseOptions none;  // no restrictions: /dev/urandom is still no file to read
+    none.file_access.level = dsl::IoRestrictions::none;
+    CHECK_THAT(error_of("#include \"/dev/urandom\"" + end, none), Contains("1:10: cannot find the include file \"/dev/urandom\""));
+}
