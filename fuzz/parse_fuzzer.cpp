@@ -43,6 +43,8 @@ photon::dsl::ParseOptions fuzz_options() {
     o.max_primitives = 2'000;
     o.max_macro_depth = 64;
     o.max_array_elements = 1 << 16;
+    o.max_parse_bytes = std::uint64_t(1) << 24;
+    o.max_parse_seconds = 5;  // half the run's -timeout: a slow input is a clean error first
     return o;
 }
 

@@ -30,12 +30,22 @@ struct SceneOptions {
     std::string frames, clock_range;
     bool strict = false;
     bool quiet = false;
+    /// POV-Ray's I/O restrictions: the level (empty: the configuration's, else photon's
+    /// default), a povray.conf, and folders permitted for reading with their subfolders.
+    std::string io_restrictions, io_config;
+    std::vector<std::string> permitted_paths;
+    double max_parse_seconds = dsl::ParseOptions{}.max_parse_seconds;
+    /// The rules the scene is read under (parse_options sets them): messages quote a line of a
+    /// file only when these permit reading it.
+    dsl::FileAccessRules file_access;
     std::size_t warnings = 0;
     /// Constructs photon read but skipped or approximated: count per warning kind and keyword.
     std::map<std::string, std::map<std::string, std::size_t>> degraded;
 
     /// Counts each diagnostic and prints it (unless --quiet without --strict).
     dsl::DiagnosticSink sink();
+    /// `d` as printed: its source line quoted only when the scene may read its file.
+    [[nodiscard]] std::string format(const dsl::Diagnostic& d) const;
     /// How to read the scene: defines, include paths, the animation clock, and the image size
     /// (POV-Ray's image_width and image_height): the command line's --width and --height when
     /// given, else 800 x 600.

@@ -43,6 +43,22 @@ void add_scene_options(CLI::App& cmd, SceneOptions& so) {
     cmd.add_option("--clock-range", so.clock_range, "FROM:TO: the clock at the first and last frame (POV-Ray's Initial_Clock/Final_Clock, default 0:1)");
     cmd.add_option("--frame", so.animation.frame, "Read frame N of the animation (its `frame_number`; default the first frame of --frames)");
     cmd.add_flag("--strict", so.strict, "Treat warnings as errors (exit status 1)");
+    // POV-Ray's I/O restrictions (povray.conf), docs/robustness.md.
+    cmd.add_option("--io-restrictions", so.io_restrictions,
+                   "Which files the scene may open, as POV-Ray's [File I/O Security]: restricted (only the scene's "
+                   "folder, the include path, the current folder and the permitted paths), read-only (read any file, "
+                   "write only there) or none (default: --io-config's level, else restricted)")
+        ->check(CLI::IsMember({"none", "read-only", "restricted"}));
+    cmd.add_option("--io-config", so.io_config,
+                   "A povray.conf (POV-Ray's syntax) whose [File I/O Security] level and [Permitted Paths] apply")
+        ->check(CLI::ExistingFile);
+    cmd.add_option("--permit-path", so.permitted_paths, "Also let the scene read files in DIR and its subfolders (repeatable)")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    cmd.add_option("--max-parse-seconds", so.max_parse_seconds,
+                   "Stop reading the scene after this many seconds, with an error (0: no limit)")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     cmd.add_flag("-q,--quiet", so.quiet, "Print errors only");
 }
 
@@ -120,7 +136,7 @@ int main(int argc, char** argv) {
         if (check->parsed()) return photon::cli::run_check(so, settings.overrides());
         return photon::cli::run_export(so, export_output);
     } catch (const photon::dsl::Error& e) {
-        std::cerr << e.what() << '\n';
+        std::cerr << so.format({photon::dsl::Severity::error, e.location(), e.message(), {}, {}}) << '\n';
     } catch (const std::exception& e) {
         std::cerr << "photon: error: " << e.what() << '\n';
     }

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // How every `photon` command reads its scene: the diagnostics it counts and prints, and the
-// parse options made from -D, -I and the animation flags (commands.hpp).
+// parse options made from -D, -I, the I/O restrictions, the limits and the animation flags
+// (commands.hpp).
 
 #include "commands.hpp"
 
 #include <photon/dsl/object_geometry.hpp>
+#include <photon/dsl/povray_conf.hpp>
 
 #include <cstdint>
 #include <exception>
@@ -20,8 +22,15 @@ dsl::DiagnosticSink SceneOptions::sink() {
     return [this](const dsl::Diagnostic& d) {
         if (d.severity != dsl::Severity::note) ++warnings;
         if (!d.kind.empty()) ++degraded[d.kind][d.keyword];
-        if (!quiet || strict) std::cerr << dsl::format_diagnostic(d) << '\n';
+        if (!quiet || strict) std::cerr << format(d) << '\n';
     };
+}
+
+std::string SceneOptions::format(const dsl::Diagnostic& d) const {
+    // A file the scene may not read is never read, so its lines are never there to quote: this
+    // holds that true of every message, whatever reached it.
+    const bool quote = d.location.file && file_access.permits(dsl::resolved_path(d.location.file->name), dsl::FileAccess::read);
+    return dsl::format_diagnostic(d, quote);
 }
 
 dsl::ParseOptions SceneOptions::parse_options(const dsl::SettingsOverrides& overrides) {
@@ -55,6 +64,17 @@ dsl::ParseOptions SceneOptions::parse_options(const dsl::SettingsOverrides& over
         o.defines[name] = value;
     }
     o.animation = animation_clock();
+    o.max_parse_seconds = max_parse_seconds;
+    dsl::FileAccessRules& rules = o.file_access;
+    rules.how_to_permit = "permit it with --permit-path DIR (reading), a `read* = DIR` or `read+write* = DIR` line "
+                          "in a povray.conf given with --io-config, or --io-restrictions read-only or none";
+    if (!io_config.empty()) dsl::apply_povray_conf_file(rules, io_config);
+    if (!io_restrictions.empty()) {
+        rules.level = *dsl::io_restrictions_named(io_restrictions);  // CLI11 checked the name
+        rules.level_origin = "--io-restrictions";
+    }
+    for (const auto& dir : permitted_paths) rules.permit(dir, true, false, "--permit-path " + dir);
+    file_access = dsl::scene_file_access(o, scene);
     return o;
 }
 

@@ -22,9 +22,10 @@ using namespace dsl_test;
 
 namespace {
 
-/// A file the parser can find (its bytes are never read: the reader below makes the pixels).
+/// A file the parser can find (its bytes are never read: the reader below makes the pixels), in
+/// the current folder: a scene read from a string may read there (file_access.hpp).
 struct ImageStandIn {
-    std::filesystem::path path = std::filesystem::temp_directory_path() /
+    std::filesystem::path path = std::filesystem::current_path() /
                                  ("photon-image-map-test-" + std::to_string(::getpid()) + ".png");
     ImageStandIn() { std::ofstream(path) << "not read"; }
     ~ImageStandIn() { std::filesystem::remove(path); }
@@ -100,7 +101,7 @@ TEST_CASE("image_map's options reach the library, and `gamma` the reader", "[dsl
 }
 
 TEST_CASE("image_map's errors name the place in the scene", "[dsl][image_map]") {
-    CHECK_THAT(error_of("plane { y, 0 pigment { image_map { png \"/nonexistent/photon-no-such.png\" } } }"),
+    CHECK_THAT(error_of("plane { y, 0 pigment { image_map { png \"photon-no-such.png\" } } }"),
                Catch::Contains("1:40: cannot find the image file"));
     const ImageStandIn file;
     CHECK_THAT(error_of("plane { y, 0 pigment { image_map { png \"" + file.path.string() + "\" map_type 3 } } }"),

@@ -97,6 +97,23 @@ TEST_CASE("a missing or unreadable file is an ImageError naming it", "[image_fil
     CHECK_THROWS_WITH(read_pixel_grid(dir.path / "none.png"), Catch::Contains("none.png"));
 }
 
+TEST_CASE("a file declaring more pixels than the limit is refused from its header", "[image_file]") {
+    const ScratchDir dir;
+    const auto small = dir.path / "small.png";
+    write_test_image<unsigned char>(small, 4, 4, 3, std::vector<unsigned char>(48, 7), OIIO::TypeDesc::UINT8);
+    CHECK(read_pixel_grid(small, {}, 16).width() == 4);
+    CHECK_THROWS_WITH(read_pixel_grid(small, {}, 15),
+                      Catch::Contains("small.png: the file declares 4 x 4 pixels of 3 channels; photon reads images of at "
+                                      "most 15 pixels"));
+    // A 20-byte file whose header declares 100,000 x 100,000 pixels: refused, nothing allocated.
+    const auto huge = dir.path / "huge.ppm";
+    std::FILE* f = std::fopen(huge.c_str(), "wb");
+    REQUIRE(f);
+    std::fputs("P6\n100000 100000\n255\nabc", f);
+    std::fclose(f);
+    CHECK_THROWS_WITH(read_pixel_grid(huge), Catch::Contains("declares 100000 x 100000 pixels"));
+}
+
 #if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
 TEST_CASE("a palette PNG gives its colours and its indices", "[image_file]") {
     const ScratchDir dir;

@@ -29,6 +29,11 @@
 
 namespace photon {
 
+/// The most pixels read_pixel_grid reads from one file (8192 x 8192): a file's header may
+/// declare any size, and a small hostile file (a PNG declaring 100,000 x 100,000) must not make
+/// the reader allocate what it declares. Decoded, such an image takes about 3 GB.
+inline constexpr std::uint64_t max_image_file_pixels = std::uint64_t(1) << 26;
+
 namespace image_file_detail {
 
 inline float decode_srgb(float v) noexcept {
@@ -83,8 +88,9 @@ inline std::vector<std::uint8_t> png_palette_indices([[maybe_unused]] const std:
 /// The image at `path`, its colour decoded to linear values by `gamma` (alpha is never decoded).
 /// One or two channels read as grey (and alpha); three or four as RGB (and alpha). A palette PNG
 /// also gives its indices (with libpng: PHOTON_HAS_PNG). Throws
-/// ImageError when the file cannot be read.
-[[nodiscard]] inline PixelGrid read_pixel_grid(const std::filesystem::path& path, ImageGamma gamma = {}) {
+/// ImageError when the file cannot be read, or declares more than `max_pixels` pixels.
+[[nodiscard]] inline PixelGrid read_pixel_grid(const std::filesystem::path& path, ImageGamma gamma = {},
+                                               std::uint64_t max_pixels = max_image_file_pixels) {
     // PNG and TGA store colour unassociated with alpha, as POV-Ray reads it: keep it so.
     OIIO::ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1);
@@ -93,6 +99,11 @@ inline std::vector<std::uint8_t> png_palette_indices([[maybe_unused]] const std:
     const OIIO::ImageSpec spec = in->spec();
     const int n = spec.nchannels;
     if (n < 1 || spec.width < 1 || spec.height < 1) throw ImageError(path.string() + ": the image has no pixels");
+    if (spec.depth > 1) throw ImageError(path.string() + ": a volume image (depth " + std::to_string(spec.depth) + "): photon reads flat images");
+    if (std::uint64_t(spec.width) * std::uint64_t(spec.height) > max_pixels || n > 64)
+        throw ImageError(path.string() + ": the file declares " + std::to_string(spec.width) + " x " +
+                         std::to_string(spec.height) + " pixels of " + std::to_string(n) + " channels; photon reads images of at most " +
+                         std::to_string(max_pixels) + " pixels and 64 channels");
     std::vector<float> data(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(n));
     if (!in->read_image(0, 0, 0, n, OIIO::TypeDesc::FLOAT, data.data()))
         throw ImageError(path.string() + ": " + in->geterror());

@@ -67,10 +67,12 @@ using DiagnosticSink = std::function<void(const Diagnostic&)>;
     return text.substr(begin, end - begin);
 }
 
-/// `file:line:column: error: message`, then the source line and a caret under the column.
-[[nodiscard]] inline std::string format_diagnostic(const Diagnostic& d) {
+/// `file:line:column: error: message`, then the source line and a caret under the column. With
+/// `quote_source` false, the first line alone: a program decides which files its messages may
+/// quote (the `photon` program quotes only those the scene may read).
+[[nodiscard]] inline std::string format_diagnostic(const Diagnostic& d, bool quote_source = true) {
     std::string out = d.location.str() + ": " + (d.severity == Severity::error ? "error: " : d.severity == Severity::note ? "note: " : "warning: ") + d.message;
-    if (!d.location.known()) return out;
+    if (!d.location.known() || !quote_source) return out;
     const std::string_view line = source_line(d.location.file->text, d.location.line);
     if (line.empty() && d.location.column <= 1) return out;
     out += "\n  ";

@@ -42,6 +42,7 @@ namespace photon::dsl {
 // The reader itself: in every including file when header-only, else only in dsl/src/parser.cpp.
 #if !(defined(PHOTON_DSL_SEPARATE_COMPILATION) && PHOTON_DSL_SEPARATE_COMPILATION) || defined(PHOTON_DSL_COMPILING_PARSER)
 #include "parser/token_stream.hpp"
+#include "parser/scene_files.hpp"
 #include "parser/directives.hpp"
 #include "parser/macros.hpp"
 #include "parser/control_flow.hpp"

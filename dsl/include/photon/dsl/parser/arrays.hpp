@@ -91,6 +91,7 @@ inline void Parser::set_element(Array& a, std::size_t index, ValueData v, const 
         if (array_elements_ > options_.max_array_elements)
             fail(at, "arrays too large: more than " + std::to_string(options_.max_array_elements) +
                          " array elements made in all");
+        charge_bytes(a.count() * (sizeof(std::shared_ptr<const Value>) + sizeof(Value)), at);  // as if full
         a.elements = a.elements ? std::make_shared<std::vector<std::shared_ptr<const Value>>>(*a.elements)
                                 : std::make_shared<std::vector<std::shared_ptr<const Value>>>(a.count());
     }

@@ -3,7 +3,9 @@
 // POV-Ray's data-file directives: #fopen, #read, #write, #fclose. A file the scene writes is
 // kept in memory for the rest of the read (an `#include` or `#fopen ... read` of that name finds
 // it there) and never reaches the disk: reading a scene has no side effects, and POV-Ray's own
-// idiom of writing text and including it (strings.inc's Parse_String) still works.
+// idiom of writing text and including it (strings.inc's Parse_String) still works. Reading and
+// writing are checked against the I/O restrictions all the same (scene_files.hpp), so a scene
+// that photon reads is one POV-Ray reads under the same povray.conf.
 
 #include <cctype>
 #include <cstdio>
@@ -32,6 +34,7 @@ inline void Parser::directive_fopen(const Token& d) {
     OpenFile f;
     f.name = name.text;
     f.writing = mode.text != "read";
+    if (f.writing && !options_.read_include) check_writable(name);
     if (mode.text == "write") written_files_[f.name].clear();
     if (!f.writing) {
         if (const auto it = written_files_.find(f.name); it != written_files_.end()) {
@@ -41,14 +44,9 @@ inline void Parser::directive_fopen(const Token& d) {
             if (!text) fail(name.location, "cannot find the data file \"" + f.name + "\"");
             f.text = std::move(*text);
         } else {
-            namespace fs = std::filesystem;
-            std::vector<fs::path> candidates{files_.back().path.parent_path() / f.name};
-            for (const auto& dir : options_.include_paths) candidates.push_back(dir / f.name);
-            std::error_code ec;
-            const auto found = std::find_if(candidates.begin(), candidates.end(),
-                                            [&](const fs::path& c) { return fs::is_regular_file(c, ec); });
-            if (found == candidates.end()) fail(name.location, "cannot find the data file \"" + f.name + "\"");
-            f.text = load(*found, f.name, name.location)->text;
+            const std::filesystem::path found = find_readable(search_places(f.name, true), name);
+            if (found.empty()) fail(name.location, "cannot find the data file \"" + f.name + "\"");
+            f.text = load(found, f.name, name.location)->text;
         }
     }
     (void)d;
@@ -111,6 +109,7 @@ inline void Parser::directive_write(const Token& d) {
     if (file.size() + out.size() > options_.max_file_bytes)
         fail(id.location, "#write: \"" + f.name + "\" would grow past " + std::to_string(options_.max_file_bytes) +
                               " bytes");
+    charge_bytes(out.size(), id.location);
     file += out;
 }
 

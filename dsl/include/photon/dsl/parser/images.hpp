@@ -42,16 +42,9 @@ inline ImageFile Parser::parse_image_file(const Token& kw) {
     if (options_.read_include || f.type == "pot") {  // POV-Ray's Fractint POT files: photon skips them
         f.path = written;  // scenes read from memory name no files photon could open
     } else {
-        std::vector<std::filesystem::path> candidates{written.is_absolute() ? written
-                                                                            : files_.back().path.parent_path() / written};
-        if (!written.is_absolute())
-            for (const auto& dir : options_.include_paths) candidates.push_back(dir / written);
-        std::error_code ec;
-        const auto found = std::find_if(candidates.begin(), candidates.end(),
-                                        [&](const std::filesystem::path& c) { return std::filesystem::is_regular_file(c, ec); });
-        if (found == candidates.end())
+        f.path = find_readable(search_places(written, true), name);
+        if (f.path.empty())
             fail(name.location, "cannot find the image file \"" + name.text + "\" (looked beside the scene and on the include path)");
-        f.path = *found;
     }
     for (;;) {
         if (peek().is_identifier("gamma")) {

@@ -207,13 +207,17 @@ inline CsgShape Parser::parse_csg(const Token& kw, Object& obj) {
 }
 
 // MESH_FILE: obj "file.obj"
-// Recorded with its path relative to the scene file that names it; the build step reads it
-// (mesh_files.hpp), so reading a scene never opens a mesh file.
+// Recorded with its path relative to the scene file that names it, resolved and checked against
+// the I/O restrictions now; the build step reads it (mesh_files.hpp), so reading a scene never
+// opens a mesh file, and a missing one is the build's error.
 inline MeshFile Parser::parse_mesh_file(const Token& kw) {
     const Token s = next();
     if (s.kind != TokenKind::string) fail_expected("a file name in double quotes after `" + kw.text + "`", s);
-    const std::filesystem::path name(s.text);
-    return MeshFile{name.is_absolute() ? name : files_.back().path.parent_path() / name, s.text, s.location};
+    const std::filesystem::path place = search_places(s.text, false).front();
+    if (options_.read_include) return MeshFile{place, s.text, s.location};
+    const std::filesystem::path resolved = resolved_path(place);
+    if (!access_.permits(resolved, FileAccess::read)) fail(s.location, access_.refusal(s.text, FileAccess::read));
+    return MeshFile{resolved, s.text, s.location};
 }
 
 inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// What a caller sets for one read of a scene: include paths or a sandboxed reader, predefined
-// identifiers, where warnings go, and the bounds that keep any input from crashing or hanging the parser.
+// What a caller sets for one read of a scene: include paths or a sandboxed reader, the files it
+// may open, predefined identifiers, where warnings go, and the bounds that keep any input from
+// crashing or hanging the parser or taking all memory.
 
 #include <cstddef>
 #include <cstdint>
@@ -20,6 +21,7 @@
 
 #include "../description.hpp"
 #include "../diagnostics.hpp"
+#include "../file_access.hpp"
 
 namespace photon::dsl {
 
@@ -57,6 +59,9 @@ struct ParseOptions {
     /// found), and the file system is never touched: a sandbox for untrusted scenes (the fuzzer)
     /// and for scenes held in memory. Names are compared as written, for include loops.
     std::function<std::optional<std::string>(const std::string& name)> read_include;
+    /// Which files the scene may open (POV-Ray's I/O restrictions): the level and the folders
+    /// permitted besides those every read permits (scene_file_access()).
+    FileAccessRules file_access;
     /// Floats declared before the scene is read (POV-Ray's `Declare=NAME=VALUE`).
     std::map<std::string, double> defines;
     DiagnosticSink diagnostics;
@@ -77,7 +82,41 @@ struct ParseOptions {
     /// Array elements made over the whole read (each array's size when it is made, or copied
     /// on a write to a shared copy): bounds the memory arrays can take.
     std::uint64_t max_array_elements = std::uint64_t(1) << 24;
+    /// Bytes of the scene's own data made over the whole read: the text of every file read
+    /// (each #include again), every string made, arrays at their full size and the files the
+    /// scene writes. An upper bound on the memory they take, since nothing made is subtracted.
+    std::uint64_t max_parse_bytes = std::uint64_t(1) << 30;
+    /// Seconds the read may take (0: no limit): a bound a render service can rely on when the
+    /// others (tokens, loop iterations) still allow hours.
+    double max_parse_seconds = 300;
 };
+
+/// The rules a read of the scene file `scene` follows: `options.file_access` and the folders
+/// every read permits, as a POV-Ray `restricted` configuration would list them: the scene's
+/// folder and its subfolders for reading and writing (`read+write*`: the scene's own maps,
+/// includes and data files), each include folder and its subfolders for reading (`read*`: -I,
+/// PHOTON_INCLUDE_PATH, POV-Ray's include folder, and the folder of each file an include folder
+/// links to: Debian links POV-Ray's fonts there from /usr/share/fonts/truetype/povray), and the
+/// current folder for reading and writing without its subfolders (Debian's `read+write = .`).
+/// Links in the scene's folder get no such grant: whoever wrote the scene may have made them.
+[[nodiscard]] inline FileAccessRules scene_file_access(const ParseOptions& options, const std::filesystem::path& scene) {
+    FileAccessRules rules = options.file_access;
+    const std::filesystem::path folder = resolved_path(scene).parent_path();
+    rules.permit(folder, true, true, "the scene's folder " + folder.string());
+    std::error_code ec;
+    for (const auto& dir : options.include_paths) {
+        rules.permit(dir, true, false, "the include folder " + resolved_path(dir).string());
+        for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+            if (entry.is_symlink(ec) && entry.is_regular_file(ec)) {
+                const std::filesystem::path target = resolved_path(entry.path()).parent_path();
+                if (!rules.permits(target / "x", FileAccess::read))
+                    rules.permit(target, false, false, "the folder " + target.string() + " that " + entry.path().string() + " links to");
+            }
+    }
+    const std::filesystem::path current = std::filesystem::current_path(ec);
+    if (!ec) rules.permit(current, false, true, "the current folder " + resolved_path(current).string());
+    return rules;
+}
 
 /// Where POV-Ray's standard include files (colors.inc, textures.inc, ...) are looked for after
 /// the scene's own directory and the caller's paths: each directory of the environment variable

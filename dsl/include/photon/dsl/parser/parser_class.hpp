@@ -5,6 +5,7 @@
 // functions are defined by concern in the headers named in each group below.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -132,6 +133,7 @@ private:
     void include_from_reader(const Token& s);
     void push_included_text(const Token& s, std::string text, const std::filesystem::path& key);
     void check_include_loop(const std::filesystem::path& canonical, const Token& s) const;
+    void charge_bytes(std::uint64_t bytes, const SourceLocation& at);
     Token raw_token();
     static std::string position(const SourceLocation& at);
     std::string position_in(const SourceLocation& at, const SourceLocation& from) const;
@@ -144,6 +146,11 @@ private:
     void open_block(const Token& keyword);
     void close_block(const Token& keyword, const std::string& items, Words known = {});
     void skip_block(const Token& kw);
+
+    // scene_files.hpp
+    std::vector<std::filesystem::path> search_places(const std::filesystem::path& written, bool include_path) const;
+    std::filesystem::path find_readable(const std::vector<std::filesystem::path>& places, const Token& name);
+    void check_writable(const Token& name) const;
 
     // directives.hpp
     void directive(const Token& d);
@@ -235,7 +242,7 @@ private:
 
     // strings.hpp
     bool starts_string(const Token& t) const;
-    std::string bounded_string(std::string s, const SourceLocation& at) const;
+    std::string bounded_string(std::string s, const SourceLocation& at);
     Token parse_string_token(const std::string& what);
     std::string parse_string_expression(const std::string& what);
     bool file_exists_here(const std::string& name) const;
@@ -412,6 +419,9 @@ private:
     std::uint64_t function_steps_ = 0;  ///< user-function evaluation so far, bounded by max_tokens
     std::map<std::string, OpenFile> open_files_;        ///< by file identifier
     std::map<std::string, std::string> written_files_;  ///< by file name: what #write wrote, in memory
+    FileAccessRules access_;  ///< the files the scene may open (scene_file_access), set in parse_main
+    std::uint64_t parse_bytes_ = 0;  ///< the scene's data made so far, for max_parse_bytes
+    std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();  ///< for max_parse_seconds
 };
 
 }  // namespace photon::dsl::detail

@@ -181,17 +181,11 @@ inline void Parser::parse_text(Object& obj) {
         std::vector<std::filesystem::path> names{name};
         if (!name.has_extension()) names.push_back(std::filesystem::path(font.text + ".ttf"));
         std::vector<std::filesystem::path> candidates;
-        for (const auto& n : names) {
-            candidates.push_back(n.is_absolute() ? n : files_.back().path.parent_path() / n);
-            if (!n.is_absolute())
-                for (const auto& dir : options_.include_paths) candidates.push_back(dir / n);
-        }
-        std::error_code ec;
-        const auto found = std::find_if(candidates.begin(), candidates.end(),
-                                        [&](const std::filesystem::path& c) { return std::filesystem::is_regular_file(c, ec); });
-        if (found == candidates.end())
+        for (const auto& n : names)
+            for (auto& place : search_places(n, true)) candidates.push_back(std::move(place));
+        t.font.path = find_readable(candidates, font);
+        if (t.font.path.empty())
             fail(font.location, "cannot find the font file \"" + font.text + "\" (looked beside the scene and on the include path)");
-        t.font.path = *found;
     }
     optional_comma();
     t.text = parse_string_token("the string of the text").text;

@@ -8,6 +8,7 @@
 namespace photon::dsl::detail {
 
 inline SceneDescription Parser::parse_main(std::shared_ptr<const SourceFile> file, std::filesystem::path canonical) {
+    access_ = scene_file_access(options_, canonical);
     scene_.at = {file, 1, 1};
     scene_.files.push_back(file);
     files_.push_back({Lexer(file), std::move(canonical), nullptr, {}});

@@ -58,10 +58,11 @@ inline bool Parser::starts_string(const Token& t) const {
     return v && std::holds_alternative<std::string>(v->data);
 }
 
-inline std::string Parser::bounded_string(std::string s, const SourceLocation& at) const {
+inline std::string Parser::bounded_string(std::string s, const SourceLocation& at) {
     if (s.size() > options_.max_file_bytes)
         fail(at, "string too long: " + std::to_string(s.size()) + " bytes, photon's strings hold at most " +
                      std::to_string(options_.max_file_bytes));
+    charge_bytes(s.size(), at);
     return s;
 }
 
@@ -175,16 +176,16 @@ inline std::string Parser::parse_string_expression(const std::string& what) {
     return bounded_string(std::move(r), f.location);
 }
 
-/// POV-Ray's file_exists: the file is found where `#include` would find it.
+/// POV-Ray's file_exists: the file is found where `#include` would find it. A file the I/O
+/// restrictions refuse is not looked for: false, as POV-Ray answers when it may not open it.
 inline bool Parser::file_exists_here(const std::string& name) const {
     if (options_.read_include) return options_.read_include(name).has_value();
-    namespace fs = std::filesystem;
+    if (name.empty()) return false;
     std::error_code ec;
-    const fs::path p(name);
-    if (p.is_absolute()) return fs::is_regular_file(p, ec);
-    if (!files_.empty() && fs::is_regular_file(files_.back().path.parent_path() / p, ec)) return true;
-    for (const auto& dir : options_.include_paths)
-        if (fs::is_regular_file(dir / p, ec)) return true;
+    for (const auto& place : search_places(name, true)) {
+        const std::filesystem::path resolved = resolved_path(place);
+        if (access_.permits(resolved, FileAccess::read) && std::filesystem::is_regular_file(resolved, ec)) return true;
+    }
     return false;
 }
 

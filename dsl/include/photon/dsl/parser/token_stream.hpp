@@ -41,6 +41,7 @@ inline std::shared_ptr<const SourceFile> Parser::load(const std::filesystem::pat
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) fail(where, "cannot open \"" + name + "\": " + ec.message());
     if (size > options_.max_file_bytes) fail(where, too_large_message(std::size_t(size)));
+    charge_bytes(size, where);
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(where, "cannot open \"" + name + "\"");
     std::string text(std::size_t(size), '\0');
@@ -65,20 +66,8 @@ inline void Parser::directive_include(const Token& d) {
         return;
     }
     const fs::path name(s.text);
-    std::vector<fs::path> candidates;
-    if (name.is_absolute()) {
-        candidates.push_back(name);
-    } else {
-        candidates.push_back(files_.back().path.parent_path() / name);
-        for (const auto& dir : options_.include_paths) candidates.push_back(dir / name);
-    }
-    std::error_code ec;
-    fs::path found;
-    for (const auto& c : candidates)
-        if (fs::is_regular_file(c, ec)) {
-            found = c;
-            break;
-        }
+    const std::vector<fs::path> candidates = search_places(name, true);
+    const fs::path found = find_readable(candidates, s);
     if (found.empty()) {
         std::string where;
         for (const auto& c : candidates)
@@ -91,15 +80,15 @@ inline void Parser::directive_include(const Token& d) {
                                             "or PHOTON_INCLUDE_PATH"
                                           : ""));
     }
-    const fs::path canonical = weakly_canonical(found);
-    check_include_loop(canonical, s);
+    check_include_loop(found, s);
     (void)d;
-    std::string display = found.lexically_normal().string();
+    std::error_code ec;
+    std::string display = found.string();
     if (const auto rel = fs::proximate(found, ec); !ec && !rel.empty() && rel.native().rfind("..", 0) != 0)
         display = rel.lexically_normal().string();
     auto file = load(found, display, s.location);
     scene_.files.push_back(file);
-    files_.push_back({Lexer(file), canonical, nullptr, {}});
+    files_.push_back({Lexer(file), found, nullptr, {}});
     scopes_.emplace_back();
 }
 
@@ -115,10 +104,19 @@ inline void Parser::include_from_reader(const Token& s) {
 inline void Parser::push_included_text(const Token& s, std::string text, const std::filesystem::path& key) {
     check_include_loop(key, s);
     if (text.size() > options_.max_file_bytes) fail(s.location, too_large_message(text.size()));
+    charge_bytes(text.size(), s.location);
     auto file = std::make_shared<SourceFile>(SourceFile{s.text, std::move(text)});
     scene_.files.push_back(file);
     files_.push_back({Lexer(file), key, nullptr, {}});
     scopes_.emplace_back();
+}
+
+/// Counts `bytes` of the scene's data made, failing at `at` past ParseOptions::max_parse_bytes.
+inline void Parser::charge_bytes(std::uint64_t bytes, const SourceLocation& at) {
+    parse_bytes_ += bytes;
+    if (parse_bytes_ > options_.max_parse_bytes)
+        fail(at, "the scene's data is too large: more than " + std::to_string(options_.max_parse_bytes) +
+                     " bytes of file text, strings, arrays and written files made while it is read");
 }
 
 inline void Parser::check_include_loop(const std::filesystem::path& canonical, const Token& s) const {
@@ -136,6 +134,14 @@ inline Token Parser::raw_token() {
             const Lexer& lexer = files_.back().lexer;
             fail({lexer.file(), lexer.state().line, lexer.state().column},
                  "the scene is too long: more than " + std::to_string(options_.max_tokens) + " tokens read");
+        }
+        // The clock every 1024 tokens: reading it costs more than a token.
+        if ((tokens_ & 1023) == 0 && options_.max_parse_seconds > 0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > options_.max_parse_seconds) {
+            const Lexer& lexer = files_.back().lexer;
+            fail({lexer.file(), lexer.state().line, lexer.state().column},
+                 "the scene takes too long to read: more than " + format_number(options_.max_parse_seconds) +
+                     " seconds (max_parse_seconds, the photon program's --max-parse-seconds)");
         }
         if (const FileFrame& f = files_.back(); f.macro && f.lexer.state().pos >= f.macro->body_end) {
             return_from_macro();
