@@ -11,6 +11,7 @@
 #include "mode_mean.hpp"
 
 #include <cmath>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -257,6 +258,83 @@ TEMPLATE_TEST_CASE("area light soft shadow: the penumbra where the geometry puts
     const double middle = area_direct(soft_scene, Vec3<S>(0, 0, 0), 64, 50) / area_direct(open_scene, Vec3<S>(0, 0, 0), 64, 50);
     CHECK(middle > 0.35);
     CHECK(middle < 0.6);
+}
+
+TEST_CASE("adaptive area light: corners first, split where their shadows differ, as POV-Ray's", "[light][area][adaptive]") {
+    // A 9 x 9 grid whose emitters with i < 4 are hidden (a shadow's edge through the grid); each
+    // emitter's light is i + 10 j, so the averages say which emitters were counted and how.
+    std::vector<std::optional<GridSample<double>>> grid;
+    std::set<std::pair<unsigned, unsigned>> asked;
+    auto grid_sample = [&](bool edge) {
+        return [&asked, edge](unsigned i, unsigned j) {
+            asked.insert({i, j});
+            const bool seen = !edge || i >= 4;
+            return GridSample<double>{Rgb<double>(seen ? double(i + 10 * j) : 0.0), Rgb<double>(seen ? 1.0 : 0.0)};
+        };
+    };
+    // Wholly seen, level 0: the four corners stand for the grid, POV-Ray's mean of them.
+    Rgb<double> light = adaptive_grid_light<double>(9, 9, 0, grid_sample(false), grid);
+    CHECK(asked.size() == 4);
+    CHECK(light.x == Approx((0 + 8 + 80 + 88) / 4.0));
+    // Level 1: one split however alike the corners, 3 x 3 grid points, each quarter's mean counted once.
+    asked.clear();
+    light = adaptive_grid_light<double>(9, 9, 1, grid_sample(false), grid);
+    CHECK(asked.size() == 9);
+    // A linear light: every quarter's corner mean is its centre's value, and so is the whole's.
+    CHECK(light.x == Approx(4 + 40));
+    // The edge: regions straddling i = 4 split down to neighbouring grid points; regions wholly on
+    // one side do not. Fewer rays than the grid's 81, more than the corners.
+    asked.clear();
+    light = adaptive_grid_light<double>(9, 9, 0, grid_sample(true), grid);
+    CHECK(asked.size() > 9);
+    CHECK(asked.size() < 81);
+    for (unsigned j = 0; j < 9; j += 8) {  // along the edges i = 3, 4 meet where the split resolves the edge
+        CHECK(asked.count({3, j}) == 1);
+        CHECK(asked.count({4, j}) == 1);
+    }
+    CHECK(light.x > 0.0);
+    // A 1 x 1 light is its one emitter; a 1 x N light splits along its one axis only.
+    asked.clear();
+    CHECK(adaptive_grid_light<double>(1, 1, 3, grid_sample(false), grid).x == 0.0);
+    CHECK(asked.size() == 1);
+    asked.clear();
+    light = adaptive_grid_light<double>(1, 5, 2, grid_sample(false), grid);
+    CHECK(asked.size() == 5);
+}
+
+TEMPLATE_TEST_CASE("adaptive area light: direct light as the full grid's where nothing casts a shadow, few rays",
+                   "[light][area][adaptive]", float, double) {
+    using S = TestType;
+    const Rgb<S> power(S(4 * area_pi));
+    AreaLight<S> light{.center = {0, 2, 0}, .axis1 = {0.2, 0, 0}, .axis2 = {0, 0, 0.2}, .size1 = 10, .size2 = 10, .power = power};
+    const auto full_scene = area_floor_scene(light, false);
+    light.adaptive = 1;
+    const auto adaptive_scene = area_floor_scene(light, false);
+    const auto shadowed_scene = area_floor_scene(light, true);
+    const Vec3<S> n{0, 1, 0};
+    const Material<S> m = Material<S>::lambertian(Rgb<S>(S(0.5)));
+    const DirectLightOptions povray{.adaptive_area_lights = true};
+    for (const double x : {0.3, 1.5}) {
+        const Vec3<S> p(S(x), 0, 0), above(S(x), S(1e-4), 0);
+        ShadingContext full_ctx, adaptive_ctx;
+        const double full = double(direct_lighting(full_scene, p, above, n, n, n, m, m.diffuse(), 100, full_ctx).x);
+        const double adaptive = double(direct_lighting(adaptive_scene, p, above, n, n, n, m, m.diffuse(), 100, adaptive_ctx, povray).x);
+        CHECK(full_ctx.rays.shadow == 100);
+        // Level 1 and no shadow: the corners of the quarters [0, 4] and [5, 9] on each axis.
+        CHECK(adaptive_ctx.rays.shadow == 16);
+        CHECK(adaptive == Approx(full).epsilon(0.01));  // a small light: its corners' mean is its mean
+        // Options off (the judges): the adaptive light takes every emitter.
+        ShadingContext judge_ctx;
+        (void)direct_lighting(adaptive_scene, p, above, n, n, n, m, m.diffuse(), 100, judge_ctx);
+        CHECK(judge_ctx.rays.shadow == 100);
+    }
+    // In the slab's penumbra at x = 0.02 the emitters with x < -0.02 (columns 0 to 3) are hidden:
+    // the quarter [0, 4] is split where its corners differ. More rays than the 16 of an open view.
+    ShadingContext edge_ctx;
+    const double edge = double(direct_lighting(shadowed_scene, Vec3<S>(S(0.02), 0, 0), Vec3<S>(S(0.02), S(1e-4), 0), n, n, n, m,
+                                               m.diffuse(), 100, edge_ctx, povray).x);
+    CHECK(edge_ctx.rays.shadow > 16);
+    CHECK(edge > 0.0);
 }
 
 TEMPLATE_TEST_CASE("area light photons: first-hit irradiance equals the shadow rays'", "[light][area][photons]", float, double) {

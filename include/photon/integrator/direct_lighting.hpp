@@ -15,12 +15,27 @@
 #include "../material/highlight.hpp"
 #include "../material/material.hpp"
 #include "../math/sampling.hpp"
+#include "area_light_adaptive.hpp"
 #include "environment_lighting.hpp"
 #include "media_seen.hpp"
 #include "separating_wall.hpp"
 #include "shading_context.hpp"
 
 namespace photon {
+
+/// How direct_lighting samples what it may choose.
+struct DirectLightOptions {
+    /// Per light, whether it reaches what the camera sees (EffectsPlan::light_emits); null: all.
+    const std::vector<bool>* reaches = nullptr;
+    unsigned sky_samples = 0;  ///< shadow rays to the sky; 0: its own Environment::shadow_samples
+    /// False leaves the sky's light out (rt, as POV-Ray's ray tracing, where the sky lights
+    /// diffuse surfaces only under radiosity).
+    bool sky_light = true;
+    /// An area light with POV-Ray's `adaptive N` is sampled as POV-Ray samples it
+    /// (area_light_adaptive.hpp) when its shadow rays are its own grid: rt and pm, as POV-Ray
+    /// renders; the judges (sppm, the path tracer) sample every emitter.
+    bool adaptive_area_lights = false;
+};
 
 /// Radiance reflected towards `wo` at the surface point `x` with unit shading normal `n` on the
 /// shaded side (a normal field's tilt, else the geometric normal), from every light, by shadow
@@ -32,18 +47,16 @@ namespace photon {
 /// The light is evaluated at x itself, not at the offset origin: the offset grows with the
 /// distance from the world origin (1.5 cm at 1000 units in float) and would otherwise bias
 /// cos(theta) / d^2 by as much (2% for a light 1.5 units away).
-/// Lights with `reaches[l] == false` are skipped: the light-path plan proved that none of their
-/// light reaches a point the camera sees (walled off, or zero power), so their shadow rays
-/// would all add zero. Empty: every light is sampled. The scene's sky, if any, adds its direct
-/// light (environment_lighting; Lambertian only) by `sky_samples` shadow rays, or by its own
-/// Environment::shadow_samples when 0; `sky_light` false leaves it out (rt, as POV-Ray's ray
-/// tracing, where the sky lights diffuse surfaces only under radiosity).
+/// Lights with `(*options.reaches)[l] == false` are skipped: the light-path plan proved that none
+/// of their light reaches a point the camera sees (walled off, or zero power), so their shadow
+/// rays would all add zero. The scene's sky, if any, adds its direct light
+/// (environment_lighting; Lambertian only) unless options.sky_light is false.
 template <class SceneT, Scalar S>
 [[nodiscard]] Rgb<S> direct_lighting(const SceneT& scene, const Vec3<S>& x, const Vec3<S>& shadow_origin,
                                      const Vec3<S>& n, const Vec3<S>& geometric_n, const Vec3<S>& wo,
                                      const Material<S>& material,
-                                     const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx, const std::vector<bool>& reaches = {},
-                                     unsigned sky_samples = 0, bool sky_light = true) {
+                                     const Rgb<S>& albedo, unsigned shadow_samples, ShadingContext& ctx,
+                                     const DirectLightOptions& options = {}) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = albedo * inv_pi<S>;
     const bool highlights = material.has_highlight();
@@ -51,7 +64,7 @@ template <class SceneT, Scalar S>
     const Rgb<S> highlight_weight = highlights ? material.highlight_weight_at(x) : Rgb<S>(S(0));
     const auto lights = scene.lights();
     for (std::size_t l = 0; l < lights.size(); ++l) {
-        if (l < reaches.size() && !reaches[l]) continue;
+        if (options.reaches && l < options.reaches->size() && !(*options.reaches)[l]) continue;
         const Light<S>& light = lights[l];
         const IncidentSampler<S> sampler(light, x);
         const auto [columns, rows] = sampler.strata(shadow_samples);
@@ -71,6 +84,32 @@ template <class SceneT, Scalar S>
                 ++ctx.rays.walled_lights;
                 continue;
             }
+        }
+        // POV-Ray's adaptive area light: its grid refined where the shadow changes.
+        const auto* area = std::get_if<AreaLight<S>>(&light);
+        if (options.adaptive_area_lights && area && area->adaptive && shadows && columns == area->size1 &&
+            rows == area->size2 && count > 1) {
+            total += adaptive_grid_light<S>(
+                area->size1, area->size2, *area->adaptive,
+                [&](unsigned i, unsigned j) {
+                    const Vec2<S> u{(S(i) + (area->jitter ? ctx.rng.uniform<S>() : S(0.5))) / S(area->size1),
+                                    (S(j) + (area->jitter ? ctx.rng.uniform<S>() : S(0.5))) / S(area->size2)};
+                    GridSample<S> g;
+                    const auto incident = sampler.sample(u);
+                    if (!incident) return g;
+                    ++ctx.rays.shadow;
+                    const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
+                    if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) return g;
+                    g.shadow = shadow_ray_media(scene, light, shadow_origin, incident->direction, incident->distance, ctx.rng);
+                    const S cos_theta = glm::dot(n, incident->direction);
+                    if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, incident->direction) > S(0))) return g;
+                    Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
+                    if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
+                    g.light = f * incident->irradiance * g.shadow;
+                    return g;
+                },
+                ctx.area_grid);
+            continue;
         }
         Rgb<S> sum(S(0));
         for (unsigned i = 0; i < count; ++i) {
@@ -93,8 +132,9 @@ template <class SceneT, Scalar S>
         total += sum / S(count);
     }
     if constexpr (requires { scene.environment(); })
-        if (sky_light && scene.has_environment_light() && material.has_diffuse())
-            total += environment_lighting(scene, *scene.environment(), shadow_origin, n, geometric_n, albedo, ctx, sky_samples);
+        if (options.sky_light && scene.has_environment_light() && material.has_diffuse())
+            total += environment_lighting(scene, *scene.environment(), shadow_origin, n, geometric_n, albedo, ctx,
+                                          options.sky_samples);
     return total;
 }
 

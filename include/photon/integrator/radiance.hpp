@@ -66,11 +66,13 @@ public:
             switch (settings_.mode) {
             case RenderMode::rt:  // the sky is seen, but lights nothing: POV-Ray's ambient stands in
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
-                                          settings_.shadow_samples, ctx, lights_reaching_, 0, false);
+                                          settings_.shadow_samples, ctx,
+                                          {.reaches = &lights_reaching_, .sky_light = false, .adaptive_area_lights = true});
                 break;
             case RenderMode::pm:
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
-                                          settings_.shadow_samples, ctx, lights_reaching_);
+                                          settings_.shadow_samples, ctx,
+                                          {.reaches = &lights_reaching_, .adaptive_area_lights = true});
                 if (!material.has_diffuse()) break;
                 result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0

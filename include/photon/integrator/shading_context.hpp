@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <optional>
+#include <vector>
+
 #include "../estimator/density_estimate.hpp"
 #include "../math/rng.hpp"
+#include "area_light_adaptive.hpp"
 #include "render_stats.hpp"
 
 namespace photon {
@@ -14,6 +18,8 @@ struct ShadingContext {
     EstimateScratch scratch{};
     std::vector<Neighbor<float>> nearest{};  ///< for precomputed-irradiance lookups
     std::vector<std::uint32_t> occluders{};  ///< objects that may shadow one area light sample set
+    /// One adaptive area light's grid at one point (area_light_adaptive.hpp).
+    std::vector<std::optional<GridSample<double>>> area_grid{};
     RayCounts rays{};
     std::uint64_t estimates = 0;
 };

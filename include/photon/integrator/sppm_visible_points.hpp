@@ -99,8 +99,8 @@ template <class SceneT>
             const Vec3<S> above = offset_origin(x, f.normal, error);
             // The sky by as many shadow rays per pass as an area light: passes average them.
             path.direct += throughput * direct_lighting(scene, x, above, f.shading, f.normal, -ray.direction, material,
-                                                        material.diffuse_at(x) * gain, settings.shadow_samples, ctx, {},
-                                                        settings.shadow_samples);
+                                                        material.diffuse_at(x) * gain, settings.shadow_samples, ctx,
+                                                        {.sky_samples = settings.shadow_samples});
         }
         const bool continues = depth < settings.max_ray_depth && material.is_specular();
         const Scattering<S> sc = material.scattering(x, f.shading_cos, f.entering);

@@ -33,6 +33,10 @@ template <Scalar S> struct AreaLight {
     Vec3<S> axis1{}, axis2{};
     unsigned size1 = 1, size2 = 1;  ///< emitters along axis1 and axis2
     bool jitter = false, circular = false;
+    /// POV-Ray's `adaptive N`: where photon renders as POV-Ray does (rt and pm's direct light),
+    /// the grid is shadow-tested from its corners and refined where their shadows differ, at least
+    /// N levels deep (integrator/area_light_adaptive.hpp). None: every emitter, as POV-Ray without it.
+    std::optional<unsigned> adaptive{};
     Rgb<S> power{S(0)};
     std::optional<Cone<S>> cone{};
     Falloff<S> falloff{};        ///< physical 1/d^2 unless set (POV-Ray's fades)

@@ -288,7 +288,7 @@ struct ObjectPhotons {
 struct AreaLight {
     Vector3 axis1{0.0}, axis2{0.0};
     int size1 = 1, size2 = 1;
-    int adaptive = 0;
+    std::optional<int> adaptive;  ///< POV-Ray's `adaptive N`; none: every emitter
     bool jitter = false, circular = false, orient = false;
     SourceLocation at;
 };

@@ -183,7 +183,7 @@ private:
             const AreaLight& a = *l.area;
             indent(level + 1);
             out_ << "area_light " << vec(a.axis1) << ", " << vec(a.axis2) << ", " << a.size1 << ", " << a.size2;
-            if (a.adaptive) out_ << " adaptive " << a.adaptive;
+            if (a.adaptive) out_ << " adaptive " << *a.adaptive;
             if (a.jitter) out_ << " jitter";
             if (a.circular) out_ << " circular";
             if (a.orient) out_ << " orient";

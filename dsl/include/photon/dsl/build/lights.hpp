@@ -142,6 +142,8 @@ void add_pov_light(DefaultScene<S>& scene, const LightSource& l, const Transform
             scene.add_light(photon::AreaLight<S>{.center = Vec3<S>(position), .axis1 = Vec3<S>(t.vector(a->axis1)),
                                                  .axis2 = Vec3<S>(t.vector(a->axis2)), .size1 = unsigned(a->size1),
                                                  .size2 = unsigned(a->size2), .jitter = a->jitter, .circular = a->circular,
+                                                 .adaptive = a->adaptive ? std::optional<unsigned>(unsigned(*a->adaptive))
+                                                                         : std::nullopt,
                                                  .power = power, .cone = cone, .falloff = falloff, .casts_shadows = shadows,
                                                  .media_interaction = l.media_interaction,
                                                  .media_attenuation = l.media_attenuation});
