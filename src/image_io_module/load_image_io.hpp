@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // photon/film/image_io.hpp's three functions, for programs that load OpenImageIO only when they
-// touch an image (image_io_abi.hpp says why), PNG output excepted where libpng is linked
-// (png_output.hpp): the first call loads photon-image-io.so, looked for
+// touch an image (image_io_abi.hpp says why), PNG files excepted where libpng is linked
+// (png_output.hpp, photon/io/png_file.hpp): the first call loads photon-image-io.so, looked for
 //   1. at $PHOTON_IMAGE_MODULE, if set (a file);
 //   2. next to the program (the build directory);
 //   3. at PHOTON_IMAGE_MODULE_FROM_BIN relative to the program's folder (the installed layout,
@@ -20,6 +20,8 @@
 #include <string>
 #include <system_error>
 #include <vector>
+
+#include <photon/io/png_file.hpp>
 
 #include "image_io_abi.hpp"
 #include "png_output.hpp"
@@ -135,8 +137,12 @@ inline Film read_image(const std::filesystem::path& path) {
     return film;
 }
 
-/// photon::read_pixel_grid (photon/io/image_file.hpp), through the module.
+/// photon::read_pixel_grid (photon/io/image_file.hpp), through the module (a PNG file with
+/// libpng, without it: photon/io/png_file.hpp).
 inline PixelGrid read_pixel_grid(const std::filesystem::path& path, ImageGamma gamma = {}) {
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+    if (auto grid = read_png_pixel_grid(path, gamma, max_image_file_pixels)) return std::move(*grid);
+#endif
     struct Target {
         unsigned width = 0, height = 0;
         std::vector<float> rgba;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Image files read as pixel grids (io/image_file.hpp): files this test writes through
 // OpenImageIO, read back with POV-Ray 3.7's default decoding (sRGB for PNG, none for PPM), with
-// `gamma` given, with alpha, grey and 16 bits.
+// `gamma` given, with alpha, grey and 16 bits; and PNG files read by libpng alone
+// (io/png_file.hpp) as OpenImageIO reads them.
 
 #include <catch2/catch.hpp>
 
@@ -9,10 +10,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <photon/io/image_file.hpp>
+#include <photon/io/png_file.hpp>
 
 #if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
 #include <png.h>
@@ -146,5 +149,110 @@ TEST_CASE("a palette PNG gives its colours and its indices", "[image_file]") {
     // A PNG without a palette has no indices.
     write_test_image<unsigned char>(dir.path / "rgb.png", 1, 1, 3, {1, 2, 3}, OIIO::TypeDesc::UINT8);
     CHECK(read_pixel_grid(dir.path / "rgb.png").indices.empty());
+}
+#endif
+
+#if defined(PHOTON_HAS_PNG) && PHOTON_HAS_PNG
+namespace {
+
+/// A PNG written with libpng: `type` and `depth` as libpng names them, the samples (row by row,
+/// big-endian for 16 bits as the file holds them), optional gAMA, sRGB, tRNS and palette.
+struct PngSpec {
+    int width = 3, height = 2, type = PNG_COLOR_TYPE_RGB, depth = 8;
+    std::vector<png_byte> data;
+    std::optional<double> gama;
+    bool srgb = false;
+    std::vector<png_color> palette;
+    std::vector<png_byte> trns;
+};
+void write_png_file(const std::filesystem::path& path, const PngSpec& s) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    REQUIRE(f);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    png_init_io(png, f);
+    png_set_IHDR(png, info, png_uint_32(s.width), png_uint_32(s.height), s.depth, s.type, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (!s.palette.empty()) png_set_PLTE(png, info, s.palette.data(), int(s.palette.size()));
+    if (!s.trns.empty()) {
+        if (s.type == PNG_COLOR_TYPE_PALETTE) {
+            png_set_tRNS(png, info, s.trns.data(), int(s.trns.size()), nullptr);
+        } else {
+            png_color_16 key{};
+            key.gray = key.red = 7;  // the colour made transparent
+            png_set_tRNS(png, info, nullptr, 0, &key);
+        }
+    }
+    if (s.gama) png_set_gAMA(png, info, *s.gama);
+    if (s.srgb) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    const std::size_t row = png_get_rowbytes(png, info);
+    for (int y = 0; y < s.height; ++y) png_write_row(png, const_cast<png_bytep>(s.data.data() + std::size_t(y) * row));
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    std::fclose(f);
+}
+
+void check_same_grid(const PixelGrid& a, const PixelGrid& b) {
+    REQUIRE(a.width() == b.width());
+    REQUIRE(a.height() == b.height());
+    CHECK(a.has_alpha == b.has_alpha);
+    CHECK(a.grayscale == b.grayscale);
+    CHECK(a.max_value == b.max_value);
+    CHECK(a.indices == b.indices);
+    for (std::size_t i = 0; i < a.pixels().size(); ++i)
+        for (std::size_t c = 0; c < 4; ++c) REQUIRE(a.pixels()[i][c] == Approx(b.pixels()[i][c]).margin(2e-6));
+}
+
+}  // namespace
+
+TEST_CASE("libpng's reader gives OpenImageIO's grid for every kind of PNG, chunks and decodings",
+          "[image_file][png]") {
+    const ScratchDir dir;
+    std::vector<png_byte> bytes(48);
+    for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = png_byte((i * 53 + 7) % 256);
+    const std::vector<png_color> palette = {{255, 0, 0}, {0, 128, 0}, {10, 20, 250}, {7, 7, 7}};
+    const std::vector<PngSpec> specs = {
+        {.type = PNG_COLOR_TYPE_RGB, .data = bytes},
+        {.type = PNG_COLOR_TYPE_RGB_ALPHA, .data = bytes},
+        {.type = PNG_COLOR_TYPE_GRAY, .data = bytes},
+        {.type = PNG_COLOR_TYPE_GRAY_ALPHA, .data = bytes},
+        {.type = PNG_COLOR_TYPE_GRAY, .depth = 4, .data = bytes},
+        {.type = PNG_COLOR_TYPE_GRAY, .depth = 1, .data = bytes},
+        {.type = PNG_COLOR_TYPE_RGB, .depth = 16, .data = bytes},
+        {.type = PNG_COLOR_TYPE_GRAY_ALPHA, .depth = 16, .data = bytes},
+        {.type = PNG_COLOR_TYPE_RGB, .data = bytes, .gama = 1.0},
+        {.type = PNG_COLOR_TYPE_RGB, .data = bytes, .gama = 0.45455},
+        {.type = PNG_COLOR_TYPE_RGB, .data = bytes, .gama = 0.5},
+        {.type = PNG_COLOR_TYPE_RGB, .data = bytes, .gama = 0.45455, .srgb = true},
+        {.type = PNG_COLOR_TYPE_GRAY, .data = bytes, .trns = {1}},
+        {.type = PNG_COLOR_TYPE_PALETTE, .data = {0, 1, 2, 3, 2, 1}, .palette = palette},
+        {.type = PNG_COLOR_TYPE_PALETTE, .data = {0, 1, 2, 3, 2, 1}, .palette = palette, .trns = {255, 0, 128}},
+        {.type = PNG_COLOR_TYPE_PALETTE, .depth = 2, .data = {0x1b, 0xe4}, .palette = palette},
+    };
+    const ImageGamma decodings[] = {{}, {ImageGamma::Kind::none}, {ImageGamma::Kind::srgb}, {ImageGamma::Kind::power, 1.8}};
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        const auto file = dir.path / ("kind" + std::to_string(i) + ".png");
+        write_png_file(file, specs[i]);
+        for (const ImageGamma& g : decodings) {
+            INFO("png " << i << ", decoding " << int(g.kind));
+            const auto by_libpng = read_png_pixel_grid(file, g, max_image_file_pixels);
+            REQUIRE(by_libpng);
+            check_same_grid(*by_libpng, read_pixel_grid(file, g));
+        }
+    }
+    // POV-Ray's own PNGs, where povray-includes is installed.
+    for (const char* name : {"Mount1.png", "bumpmap_.png", "plasma2.png", "povmap.png", "test.png"}) {
+        const std::filesystem::path file = std::filesystem::path("/usr/share/povray-3.7/include") / name;
+        if (!std::filesystem::exists(file)) continue;
+        INFO(file);
+        const auto by_libpng = read_png_pixel_grid(file, {}, max_image_file_pixels);
+        REQUIRE(by_libpng);
+        check_same_grid(*by_libpng, read_pixel_grid(file));
+    }
+    // Not a PNG: nothing, for the caller to read another way; a PNG too big: the header's error.
+    write_test_image<unsigned char>(dir.path / "not.ppm", 1, 1, 3, {1, 2, 3}, OIIO::TypeDesc::UINT8);
+    CHECK_FALSE(read_png_pixel_grid(dir.path / "not.ppm", {}, max_image_file_pixels).has_value());
+    CHECK_THROWS_WITH(read_png_pixel_grid(dir.path / "kind0.png", {}, 5), Catch::Matchers::Contains("3 x 2 pixels"));
 }
 #endif

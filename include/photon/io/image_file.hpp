@@ -29,11 +29,6 @@
 
 namespace photon {
 
-/// The most pixels read_pixel_grid reads from one file (8192 x 8192): a file's header may
-/// declare any size, and a small hostile file (a PNG declaring 100,000 x 100,000) must not make
-/// the reader allocate what it declares. Decoded, such an image takes about 3 GB.
-inline constexpr std::uint64_t max_image_file_pixels = std::uint64_t(1) << 26;
-
 namespace image_file_detail {
 
 inline float decode_srgb(float v) noexcept {
@@ -49,7 +44,8 @@ inline ImageGamma file_decoding(const OIIO::ImageSpec& spec, const std::string& 
     const std::string space = spec.get_string_attribute("oiio:ColorSpace");
     if (space == "Linear" || space == "linear") return {ImageGamma::Kind::none};
     const float g = spec.get_float_attribute("oiio:Gamma", 0.0f);
-    if (space.rfind("GammaCorrected", 0) == 0 && g > 0.0f) return {ImageGamma::Kind::power, double(g)};
+    // OpenImageIO 2.4 names a gAMA chunk's space "Gamma2.2", earlier versions "GammaCorrected2.2".
+    if (space.rfind("Gamma", 0) == 0 && g > 0.0f) return {ImageGamma::Kind::power, double(g)};
     return {ImageGamma::Kind::srgb};
 }
 

@@ -26,6 +26,12 @@ struct ImageGamma {
     double gamma = 1.0;  ///< for Kind::power
 };
 
+/// The most pixels an image file may declare to be read (8192 x 8192; io/image_file.hpp,
+/// io/png_file.hpp): a file's header may declare any size, and a small hostile file (a PNG
+/// declaring 100,000 x 100,000) must not make the reader allocate what it declares. Decoded,
+/// such an image takes about 3 GB.
+inline constexpr std::uint64_t max_image_file_pixels = std::uint64_t(1) << 26;
+
 struct PixelGrid {
     using Pixel = std::array<float, 4>;  ///< red, green, blue, alpha (1: opaque)
 
