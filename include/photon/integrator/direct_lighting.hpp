@@ -17,6 +17,7 @@
 #include "../math/sampling.hpp"
 #include "area_light_adaptive.hpp"
 #include "environment_lighting.hpp"
+#include "filtered_shadow.hpp"
 #include "media_seen.hpp"
 #include "separating_wall.hpp"
 #include "shading_context.hpp"
@@ -35,6 +36,9 @@ struct DirectLightOptions {
     /// (area_light_adaptive.hpp) when its shadow rays are its own grid: rt and pm, as POV-Ray
     /// renders; the judges (sppm, the path tracer) sample every emitter.
     bool adaptive_area_lights = false;
+    /// Shadow rays pass transparent surfaces, filtered, as POV-Ray's without photons
+    /// (filtered_shadow.hpp): rt. Elsewhere glass stops them (its light arrives by photons).
+    bool filtered_shadows = false;
 };
 
 /// Radiance reflected towards `wo` at the surface point `x` with unit shading normal `n` on the
@@ -69,7 +73,8 @@ template <class SceneT, Scalar S>
         const IncidentSampler<S> sampler(light, x);
         const auto [columns, rows] = sampler.strata(shadow_samples);
         const unsigned count = columns * rows;
-        const bool shadows = light_casts_shadows(light);  // a `shadowless` light: no shadow rays
+        // A `shadowless` light: no shadow rays, and no highlights (POV-Ray's fill light, trace.cpp).
+        const bool shadows = light_casts_shadows(light);
         // All shadow rays to this light stay in the box around their origin and the light
         // (moved by the origin's offset, as the rays are), so only the objects touching that
         // box can block them: found once here, not per ray.
@@ -99,12 +104,17 @@ template <class SceneT, Scalar S>
                     if (!incident) return g;
                     ++ctx.rays.shadow;
                     const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
-                    if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) return g;
-                    g.shadow = shadow_ray_media(scene, light, shadow_origin, incident->direction, incident->distance, ctx.rng);
+                    Rgb<S> filter(S(1));
+                    if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) {
+                        if (!options.filtered_shadows) return g;
+                        filter = filtered_shadow(scene, shadow);
+                        if (is_black(filter)) return g;
+                    }
+                    g.shadow = filter * shadow_ray_media(scene, light, shadow_origin, incident->direction, incident->distance, ctx.rng);
                     const S cos_theta = glm::dot(n, incident->direction);
                     if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, incident->direction) > S(0))) return g;
                     Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
-                    if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
+                    if (highlights && shadows) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
                     g.light = f * incident->irradiance * g.shadow;
                     return g;
                 },
@@ -119,14 +129,19 @@ template <class SceneT, Scalar S>
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0))) continue;
             if (!(glm::dot(geometric_n, incident->direction) > S(0))) continue;
+            Rgb<S> filter(S(1));
             if (shadows) {
                 ++ctx.rays.shadow;
                 const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
-                if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) continue;
+                if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) {
+                    if (!options.filtered_shadows) continue;
+                    filter = filtered_shadow(scene, shadow);
+                    if (is_black(filter)) continue;
+                }
             }
             Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
-            if (highlights) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
-            sum += f * incident->irradiance *
+            if (highlights && shadows) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
+            sum += f * incident->irradiance * filter *
                    shadow_ray_media(scene, light, shadow_origin, incident->direction, incident->distance, ctx.rng);
         }
         total += sum / S(count);

@@ -38,7 +38,8 @@ public:
     RadianceIntegrator(const SceneT& scene, const PhotonMaps& maps, const RenderSettings& settings,
                        std::vector<bool> lights_reaching = {})
         : scene_(scene), maps_(maps), settings_(with_estimate_radii(settings, maps)),
-          lights_reaching_(std::move(lights_reaching)) {}
+          lights_reaching_(std::move(lights_reaching)),
+          filtered_shadows_(settings.mode == RenderMode::rt && has_transmissive_material(scene)) {}
 
     /// Radiance arriving along `ray` (towards its origin). `depth` is 1 for a camera ray; `weight`
     /// is the largest channel of what the ray's radiance is multiplied by in the pixel (1 for a
@@ -67,7 +68,8 @@ public:
             case RenderMode::rt:  // the sky is seen, but lights nothing: POV-Ray's ambient stands in
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
                                           settings_.shadow_samples, ctx,
-                                          {.reaches = &lights_reaching_, .sky_light = false, .adaptive_area_lights = true});
+                                          {.reaches = &lights_reaching_, .sky_light = false, .adaptive_area_lights = true,
+                                           .filtered_shadows = filtered_shadows_});
                 break;
             case RenderMode::pm:
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
@@ -303,6 +305,15 @@ private:
     const PhotonMaps& maps_;
     const RenderSettings settings_;  ///< a copy, with the maps' estimate radii
     std::vector<bool> lights_reaching_;
+    /// rt, in a scene with a surface that transmits light: shadow rays pass it, filtered
+    /// (filtered_shadow.hpp); without one, every shadow-ray hit is opaque and the test is skipped.
+    bool filtered_shadows_ = false;
+
+    [[nodiscard]] static bool has_transmissive_material(const SceneT& scene) {
+        for (std::uint32_t id = 0; id < scene.objects().size(); ++id)
+            if (scene.any_material_of(id, is_transmissive_material)) return true;
+        return false;
+    }
 };
 
 }  // namespace photon

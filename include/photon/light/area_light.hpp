@@ -40,7 +40,7 @@ template <Scalar S> struct AreaLight {
     Rgb<S> power{S(0)};
     std::optional<Cone<S>> cone{};
     Falloff<S> falloff{};        ///< physical 1/d^2 unless set (POV-Ray's fades)
-    bool casts_shadows = true;   ///< false: direct light without shadow rays (POV-Ray's `shadowless`)
+    bool casts_shadows = true;   ///< false: direct light without shadow rays or highlights (POV-Ray's `shadowless`)
     bool media_interaction = true;   ///< false: participating media scatter none of it (POV-Ray's `media_interaction off`)
     bool media_attenuation = false;  ///< true: atmospheric media dim its shadow rays (POV-Ray's `media_attenuation on`)
 

@@ -37,7 +37,7 @@ template <Scalar S> struct ParallelLight {
     Vec3<S> direction{S(0), S(-1), S(0)};  ///< unit, the way the light travels
     Rgb<S> irradiance{S(0)};             ///< W/m^2 on a surface facing the light (before any falloff)
     Falloff<S> falloff{};        ///< physical (none) unless set; of the distance from the plane
-    bool casts_shadows = true;   ///< false: direct light without shadow rays (POV-Ray's `shadowless`)
+    bool casts_shadows = true;   ///< false: direct light without shadow rays or highlights (POV-Ray's `shadowless`)
     bool media_interaction = true;   ///< false: participating media scatter none of it
     bool media_attenuation = false;  ///< true: atmospheric media dim its shadow rays
 

@@ -202,7 +202,13 @@ public:
     }
 
     /// Nearest hit with t in (0, ray.t_max).
-    [[nodiscard]] std::optional<SurfaceHit<S>> intersect(const Ray<S>& ray) const;
+    [[nodiscard]] std::optional<SurfaceHit<S>> intersect(const Ray<S>& ray) const {
+        return nearest_hit(ray, [](const Object&) { return true; });
+    }
+    /// Nearest hit of an object that casts shadows, with t in (0, ray.t_max).
+    [[nodiscard]] std::optional<SurfaceHit<S>> intersect_shadow_casters(const Ray<S>& ray) const {
+        return nearest_hit(ray, [](const Object& o) { return o.options.casts_shadow; });
+    }
     /// Whether anything that casts shadows lies on the ray within (0, ray.t_max).
     [[nodiscard]] bool occluded(const Ray<S>& ray) const;
 
@@ -226,6 +232,10 @@ private:
     static std::string_view label_of(const std::vector<std::string>& labels, std::size_t i) noexcept {
         return i < labels.size() ? std::string_view(labels[i]) : std::string_view();
     }
+
+    /// Nearest hit with t in (0, ray.t_max) of the objects `accept` takes.
+    template <class Accept>
+    [[nodiscard]] std::optional<SurfaceHit<S>> nearest_hit(const Ray<S>& ray, Accept&& accept) const;
 
     std::optional<Hit<S>> intersect_object(std::uint32_t id, const Ray<S>& ray) const {
         return std::visit([&](const auto& shape) { return shape.intersect(ray); }, objects_[id].shape);
@@ -301,12 +311,14 @@ template <Scalar S, Primitive... Shapes> void Scene<S, Shapes...>::commit(BvhCon
 }
 
 template <Scalar S, Primitive... Shapes>
-std::optional<SurfaceHit<S>> Scene<S, Shapes...>::intersect(const Ray<S>& ray) const {
+template <class Accept>
+std::optional<SurfaceHit<S>> Scene<S, Shapes...>::nearest_hit(const Ray<S>& ray, Accept&& accept) const {
     PHOTON_ASSERT(committed_);
     Ray<S> r = ray;
     std::optional<Hit<S>> best;
     std::uint32_t best_object = 0;
     for (std::uint32_t id : unbounded_) {
+        if (!accept(objects_[id])) continue;
         if (auto hit = intersect_object(id, r)) {
             r.t_max = hit->t;
             best = hit;
@@ -315,6 +327,7 @@ std::optional<SurfaceHit<S>> Scene<S, Shapes...>::intersect(const Ray<S>& ray) c
     }
     bvh_.intersect(r, [&](std::uint32_t i, Ray<S>& current) {
         const std::uint32_t id = bvh_objects_[i];
+        if (!accept(objects_[id])) return false;
         auto hit = intersect_object(id, current);
         if (!hit) return false;
         current.t_max = hit->t;

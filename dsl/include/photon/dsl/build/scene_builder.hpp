@@ -139,6 +139,13 @@ private:
         Inherited mine = inherit(o, parent);
         if (const auto* l = std::get_if<LightSource>(&o.shape)) {
             add_pov_light(*scene_, *l, mine.transform, o.at, warn_);
+            if (l->media_attenuation && std::any_of(desc_.fogs.begin(), desc_.fogs.end(),
+                                                    [](const FogDescription& f) { return f.distance > 0.0; }))
+                warn_(o.at,
+                      "`media_attenuation on` under a fog: POV-Ray blends this light's shadow rays toward the fog's "
+                      "colour (trace.cpp, ComputeShadowMedia); photon's fog fades camera, mirror and glass rays only, "
+                      "so the light arrives undimmed",
+                      "approximated light", "media_attenuation");
             light_at_.resize(scene_->lights().size(), o.at);
             return add_looks_like(*l, mine);
         }
