@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `background` and `sky_sphere` build the library's sky (light/environment.hpp) with POV-Ray
-// 3.7's composition (Trace::ComputeSky): the pigments from the last written down, each times
+// 3.7's composition (Trace::ComputeSky; 3.6's before #version 3.7): the pigments from the last written down, each times
 // `emission`, the background under them, evaluated at the direction moved back by the
 // sky_sphere's transformations (all of its pigments, wherever written); and export-pov writes
 // them back.
@@ -60,13 +60,23 @@ TEST_CASE("sky_sphere's pigment is evaluated at the direction, moved back by its
     check_sky(e, {0, 0, 1}, {0.4, 0.8, 1.2});
 }
 
-TEST_CASE("sky_sphere's layers compose as POV-Ray 3.7's, over the background", "[dsl][sky]") {
+TEST_CASE("sky_sphere's layers compose as POV-Ray 3.7's over the background, or as 3.6's before 3.7", "[dsl][sky]") {
     // Top, rgbt <1, 1, 1, 0.5>: its own 0.5, and passes 0.5 (transmit). Below, rgbf <0, 1, 1, 0.5>:
     // 0.5 * <0, 1, 1> * 0.5, and passes 0.5 * <0, 1, 1> of what reaches it (filter). The
     // background <1, 1, 1> under both: 0.5 * 0.5 * <0, 1, 1>.
-    const StagedScene b = build_sky("background { rgb 1 }\n"
-                                    "sky_sphere { pigment { rgbf <0, 1, 1, 0.5> } pigment { rgbt <1, 1, 1, 0.5> } }\n");
+    const std::string layers = "background { rgb 1 }\n"
+                               "sky_sphere { pigment { rgbf <0, 1, 1, 0.5> } pigment { rgbt <1, 1, 1, 0.5> } }\n";
+    const StagedScene b = build_sky("#version 3.7;\n" + layers);
     check_sky(b, {0, 1, 0}, {0.5, 0.5 + 0.25 + 0.25, 0.5 + 0.25 + 0.25});
+    // Before 3.7 (no #version reads as 3.62), POV-Ray 3.6's composition (Trace::ComputeSky): the
+    // lower layer weighed by the upper's filter + transmit, 0.5 (a scalar, no tint), so 0.5 *
+    // 0.5 * <0, 1, 1>; the background by the product of the filters (0) plus the product of the
+    // transmits (0): nothing.
+    check_sky(build_sky(layers), {0, 1, 0}, {0.5, 0.5 + 0.25, 0.5 + 0.25});
+    check_sky(build_sky("#version 3.6;\n" + layers), {0, 1, 0}, {0.5, 0.75, 0.75});
+    // One layer reads alike in both: 0.5 of its own and 0.5 of the background through it.
+    check_sky(build_sky("background { rgb <0, 0, 1> }\nsky_sphere { pigment { rgbt <1, 0, 0, 0.5> } }\n"), {0, 1, 0},
+              {0.5, 0, 0.5});
     // Without a background the transparent parts show black, as in POV-Ray.
     const StagedScene black = build_sky("sky_sphere { pigment { rgbt <1, 1, 1, 0.5> } }\n");
     check_sky(black, {0, 1, 0}, {0.5, 0.5, 0.5});

@@ -5,8 +5,10 @@
 // times `emission`, the layers below showing through its filter and transmit, and the
 // background colour under them all as one more, opaque layer: a layered pigment
 // (texture/layered.hpp), evaluated at the ray's direction moved back by the sky_sphere's
-// transformations. POV-Ray sees its sky with camera and reflected rays and, under radiosity,
-// with its gathers; photon always lights the scene with it (docs/scene-language.md).
+// transformations; a scene older than 3.7 composes them as POV-Ray 3.6 did (legacy_sky.hpp).
+// POV-Ray sees its sky with camera and reflected rays and, under radiosity,
+// with its gathers; photon lights the scene with it where it renders global illumination
+// (docs/scene-language.md).
 
 #include <optional>
 #include <stdexcept>
@@ -18,6 +20,7 @@
 #include "../description.hpp"
 #include "../diagnostics.hpp"
 #include "layers.hpp"
+#include "legacy_sky.hpp"
 #include "warnings.hpp"
 
 namespace photon::dsl {
@@ -36,12 +39,14 @@ template <Scalar S>
     const SkySphere& sky = *desc.sky_sphere;
     try {
         std::vector<PigmentLayer<S>> layers;
-        layers.push_back(PigmentLayer<S>(LayerColor<S>{Rgb<S>(background.rgb)}, Rgb<S>(S(1))));
         for (const Pigment& p : sky.pigments) {
             Texture t;
             t.pigment = p;
             layers.push_back(layers_detail::library_layer<S>(t, sky.transform, sky.emission, warn, p.at.known() ? p.at : sky.at, images));
         }
+        if (desc.version.value_or(3.62) < 3.7 - 1e-9)  // POV-Ray 3.6's composition (legacy_sky.hpp)
+            return Environment<S>(AnyReflectanceField<S>(LegacySky<S>(std::move(layers), Rgb<S>(background.rgb))));
+        layers.insert(layers.begin(), PigmentLayer<S>(LayerColor<S>{Rgb<S>(background.rgb)}, Rgb<S>(S(1))));
         return Environment<S>(AnyReflectanceField<S>(LayeredPigment<S>(std::move(layers))));
     } catch (const std::invalid_argument& e) {
         throw Error(sky.at, std::string("sky_sphere: ") + e.what());
