@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // POV-Ray's camera types and focal blur read into the library's camera: each keyword's
 // projection, POV-Ray's angle rules per type (Parser::Parse_Camera), the orthographic camera's
-// area, and blur_samples as the render's samples per pixel.
+// area, and blur_samples as the most samples a pixel takes.
 
 #include <catch2/catch.hpp>
 
@@ -108,9 +108,16 @@ TEST_CASE("focal blur: aperture with blur_samples, the focal point's distance, s
     REQUIRE(b.camera.has_focal_blur());
     CHECK(b.camera.focal_blur().aperture == Approx(0.4));
     CHECK(b.camera.focal_blur().focal_distance == Approx(5));  // |<3, 0, -1> - <0, 0, -5>|
-    CHECK(b.settings.samples_per_pixel == 30);
-    // blur_samples MIN, MAX: photon takes MAX samples.
-    CHECK(camera_scene("aperture 0.4 blur_samples 4, 12").settings.samples_per_pixel == 12);
+    // Rounds of 9 samples while the pixel is noisy, up to blur_samples (POV-Ray stops once its
+    // samples agree), with no contrast test: every pixel under focal blur is noisy.
+    CHECK(b.settings.samples_per_pixel == 9);
+    CHECK(b.settings.aa_max_samples == 30);
+    CHECK(b.settings.aa_contrast == 0.0f);
+    CHECK(b.settings.aa_threshold > 0.0f);
+    // blur_samples MIN, MAX: photon takes MAX as the most.
+    const auto few = camera_scene("aperture 0.4 blur_samples 4, 6");
+    CHECK(few.settings.samples_per_pixel == 6);
+    CHECK(few.settings.aa_max_samples == 16);
     // No focal point: the direction's length when angle or look_at set it.
     CHECK(camera_scene("location <0, 0, -5> look_at 0 angle 90 aperture 1 blur_samples 9").camera.focal_blur().focal_distance ==
           Approx(0.5 * 4.0 / 3.0));

@@ -333,6 +333,11 @@ TEST_CASE("polynomial: POV-Ray's bounded_by gate, and the surface in CSG", "[geo
     REQUIRE(box_gated.intersect(via_box));
     CHECK(box_gated.intersect(via_box)->t == Approx(0.75));
     CHECK(gated.contains({0, 5, 0}));  // the inside ignores the gate, as POV-Ray's
+    // The gate's box is the surface's bounds (the scene then keeps it in its BVH); ungated, infinite.
+    CHECK_FALSE(open.bounds().is_finite());
+    CHECK(gated.bounds().min == glm::dvec3(-1.0));
+    CHECK(gated.bounds().max == glm::dvec3(1.0));
+    CHECK(box_gated.bounds().max == glm::dvec3(1, 0, 1));
     CHECK_THROWS_AS(open.gated({PolynomialGate::Kind::sphere, glm::dvec3(0.0), 0.0}), std::invalid_argument);
 
     // In CSG: the torus quartic minus a slab, crossed along x.

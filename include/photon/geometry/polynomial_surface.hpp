@@ -9,7 +9,9 @@
 // Most such surfaces are unbounded (or are not known to be bounded), so bounds() is infinite and
 // the scene tests them outside its BVH. A scene may give POV-Ray's `bounded_by` sphere or box:
 // then, as in POV-Ray (Ray_In_Bound), a ray that neither meets the bound nor starts in it meets no
-// part of the surface, and one that does meets all of it, also outside the bound.
+// part of the surface, and one that does meets all of it, also outside the bound; bounds() is
+// then the bound's box, which puts the surface in the BVH (exact where the surface lies inside
+// its bound, POV-Ray's intent; where it does not, the scene file already warned).
 
 #include <algorithm>
 #include <array>
@@ -94,7 +96,15 @@ public:
     [[nodiscard]] bool contains(const Vec3<S>& p) const noexcept { return value(glm::dvec3(p)) < 0.0; }
 
     /// Infinite: the surface is not known to be bounded (and a gated one has hits outside its gate).
-    [[nodiscard]] BBox<S> bounds() const noexcept { return BBox<S>::infinite(); }
+    /// Infinite, or the gate's box: a ray that misses the gate sees nothing of the surface, so
+    /// the scene may leave the surface to its BVH (a ray that passes the gate sees all of it, and
+    /// the BVH then tests it as any object whose box the ray crosses).
+    [[nodiscard]] BBox<S> bounds() const noexcept {
+        if (!gate_) return BBox<S>::infinite();
+        if (gate_->kind == PolynomialGate::Kind::sphere)
+            return {Vec3<S>(gate_->center - gate_->radius), Vec3<S>(gate_->center + gate_->radius)};
+        return {Vec3<S>(gate_->min), Vec3<S>(gate_->max)};
+    }
 
     /// The nearest root of p(o + t d) in (0, t_max), in double also for float: the polynomial in
     /// t is expanded about the ray's point nearest the gate's centre (or the origin), with a unit
@@ -105,6 +115,12 @@ public:
 private:
     /// Whether the line o + t d, t > 0, meets the gate or starts in it (POV-Ray's Ray_In_Bound).
     [[nodiscard]] bool passes_gate(const glm::dvec3& o, const glm::dvec3& d) const noexcept;
+    /// intersect() for an order of at most N: arrays of N + 1 coefficients, so that a quartic's
+    /// expansion and roots (most of POV-Ray's polynomials are quartics) work on a few doubles.
+    template <std::size_t N> [[nodiscard]] std::optional<Hit<S>> intersect_up_to(const Ray<S>& ray) const noexcept;
+    /// The roots of eqn's polynomial of `degree` <= N in [lo, hi], ascending.
+    template <std::size_t N>
+    [[nodiscard]] static auto roots_of(const std::array<double, N + 1>& eqn, std::size_t degree, double lo, double hi) noexcept;
 
     int order_;
     std::vector<double> coefficients_;
@@ -190,6 +206,32 @@ template <Scalar S> bool PolynomialSurface<S>::passes_gate(const glm::dvec3& o, 
 }
 
 template <Scalar S> std::optional<Hit<S>> PolynomialSurface<S>::intersect(const Ray<S>& ray) const noexcept {
+    return order_ <= 4 ? intersect_up_to<4>(ray) : intersect_up_to<detail::max_runtime_degree>(ray);
+}
+
+template <Scalar S>
+template <std::size_t N>
+auto PolynomialSurface<S>::roots_of(const std::array<double, N + 1>& eqn, std::size_t degree, double lo, double hi) noexcept {
+    if constexpr (N <= 4) {
+        detail::Roots<4> out;
+        const auto take = [&](const auto& roots) {
+            for (std::size_t r = 0; r < roots.count; ++r) out.push(roots.value[r]);
+        };
+        switch (degree) {
+        case 1: take(detail::roots_in<1>({eqn[0], eqn[1]}, lo, hi)); break;
+        case 2: take(detail::roots_in<2>({eqn[0], eqn[1], eqn[2]}, lo, hi)); break;
+        case 3: take(detail::roots_in<3>({eqn[0], eqn[1], eqn[2], eqn[3]}, lo, hi)); break;
+        default: take(detail::roots_in<4>({eqn[0], eqn[1], eqn[2], eqn[3], eqn[4]}, lo, hi)); break;
+        }
+        return out;
+    } else {
+        return detail::roots_up_to(eqn.data(), degree, lo, hi);
+    }
+}
+
+template <Scalar S>
+template <std::size_t N>
+std::optional<Hit<S>> PolynomialSurface<S>::intersect_up_to(const Ray<S>& ray) const noexcept {
     const glm::dvec3 origin(ray.origin), direction(ray.direction);
     const double speed = glm::length(direction);
     if (!(speed > 0.0) || !std::isfinite(speed)) return std::nullopt;
@@ -204,8 +246,7 @@ template <Scalar S> std::optional<Hit<S>> PolynomialSurface<S>::intersect(const 
 
     // p(o + s u) as a polynomial in s, term group by term group: for each (i, j), the z terms
     // sum to w(s) = sum_k c_ijk (o_z + s u_z)^k, which multiplies (o_x + s u_x)^i (o_y + s u_y)^j.
-    constexpr std::size_t N = detail::max_runtime_degree + 1;
-    using Poly = std::array<double, N>;
+    using Poly = std::array<double, N + 1>;
     const auto n_order = std::size_t(order_);
     const auto power_of = [&](int axis, std::size_t n, Poly& out) {  // (o_a + s u_a)^n
         out[0] = 1.0;
@@ -221,7 +262,7 @@ template <Scalar S> std::optional<Hit<S>> PolynomialSurface<S>::intersect(const 
             if (a[p] != 0.0)
                 for (std::size_t q = 0; q <= db; ++q) out[p + q] += a[p] * b[q];
     };
-    std::array<Poly, N> z_power;
+    std::array<Poly, N + 1> z_power;
     for (std::size_t n = 0; n <= n_order; ++n) power_of(2, n, z_power[n]);
     Poly eqn, xi, yj, xy, w, product;
     for (std::size_t e = 0; e <= n_order; ++e) eqn[e] = 0.0;
@@ -265,7 +306,7 @@ template <Scalar S> std::optional<Hit<S>> PolynomialSurface<S>::intersect(const 
     double hi = reach;
     if (std::isfinite(double(ray.t_max))) hi = std::min(hi, double(ray.t_max) * speed - shift);
     if (!(hi > lo)) return std::nullopt;
-    const auto roots = detail::roots_up_to(eqn.data(), degree, std::max(lo, -reach), hi);
+    const auto roots = roots_of<N>(eqn, degree, std::max(lo, -reach), hi);
     for (std::size_t r = 0; r < roots.count; ++r) {
         const double s = roots.value[r];
         const S t = S((shift + s) / speed);

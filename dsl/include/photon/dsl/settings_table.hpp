@@ -291,14 +291,16 @@ inline constexpr RenderSetting render_settings_table[] = {
      .hi = SettingsLimits::max_samples, .noun = "samples per pixel",
      .help = "Samples every pixel takes (anti-aliasing by contrast adds more where pixels differ)",
      .field = member<&RenderSettings::samples_per_pixel>,
-     // One sample where contrast decides the rest, as POV-Ray's +A; focal blur's samples otherwise.
+     // One sample where contrast decides the rest, as POV-Ray's +A. Under focal blur, rounds of
+     // up to 9 while the pixel is noisy (aa_max_samples: blur_samples), as POV-Ray's blur stops
+     // once its samples agree.
      .program_default = [](const DefaultContext& c) -> std::optional<SettingValue> {
          const std::uint64_t blur = std::min<std::uint64_t>(c.blur_samples, SettingsLimits::max_samples);
-         if (traces_pixels(c.mode)) return std::max<std::uint64_t>(blur, 1);
+         if (traces_pixels(c.mode)) return blur > 0 ? std::min<std::uint64_t>(blur, 9) : 1;
          if (blur > RenderSettings{}.samples_per_pixel) return blur;
          return std::nullopt;
      },
-     .program_default_note = "the camera's blur_samples where it has focal blur"},
+     .program_default_note = "up to 9 where the camera has focal blur"},
     {.key = "aa_contrast", .keyword = "aa_contrast", .flag = "--aa-contrast", .kind = SettingKind::real,
      .noun = "aa contrast",
      .help = "rt, pm and pm-direct: anti-aliasing by contrast; a pixel whose colour differs from a neighbour's "
@@ -306,9 +308,11 @@ inline constexpr RenderSetting render_settings_table[] = {
              "more (0: off)",
      .field = member<&RenderSettings::aa_contrast>,
      .program_default = [](const DefaultContext& c) -> std::optional<SettingValue> {
-         if (traces_pixels(c.mode)) return 0.3;  // POV-Ray's +A0.3
+         // POV-Ray's +A0.3; under focal blur every pixel is noisy: the noise decides (aa_threshold).
+         if (traces_pixels(c.mode) && c.blur_samples == 0) return 0.3;
          return std::nullopt;
-     }},
+     },
+     .program_default_note = "0 where the camera has focal blur"},
     {.key = "aa_samples", .keyword = "aa_samples", .flag = "--aa-samples", .lo = 1,
      .hi = SettingsLimits::max_samples, .noun = "aa samples",
      .help = "Samples per round of anti-aliasing by contrast (POV-Ray's Antialias_Depth 3: 3 x 3)",
@@ -320,14 +324,20 @@ inline constexpr RenderSetting render_settings_table[] = {
              "by contrast, only the pixels it supersamples)",
      .field = member<&RenderSettings::aa_threshold>,
      .program_default = [](const DefaultContext& c) -> std::optional<SettingValue> {
-         // 0.1, not a looser 0.3: on room 1 (pm, 128x96) 3.0e-3 against 4.6e-3 for 9% more time.
          if (c.mode == RenderMode::rt || c.mode == RenderMode::pm) return 0.1;
          return std::nullopt;
      }},
     {.key = "aa_max_samples", .keyword = "aa_max_samples", .flag = "--aa-max-spp", .lo = 1,
      .hi = SettingsLimits::max_samples, .noun = "aa max samples",
      .help = "Most samples a pixel takes under adaptive anti-aliasing (whole rounds of the samples per pixel)",
-     .field = member<&RenderSettings::aa_max_samples>},
+     .field = member<&RenderSettings::aa_max_samples>,
+     .program_default = [](const DefaultContext& c) -> std::optional<SettingValue> {
+         // Focal blur's blur_samples: the most POV-Ray takes.
+         if (traces_pixels(c.mode) && c.blur_samples > RenderSettings{}.aa_max_samples)
+             return std::uint64_t(std::min<std::uint64_t>(c.blur_samples, SettingsLimits::max_samples));
+         return std::nullopt;
+     },
+     .program_default_note = "the camera's blur_samples where more"},
     {.key = "irradiance_stride", .keyword = "irradiance_stride", .flag = "--irradiance-stride", .hi = 1e6,
      .noun = "irradiance stride",
      .help = "Final gather rays read irradiance precomputed at every N-th global photon "

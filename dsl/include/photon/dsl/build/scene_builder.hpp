@@ -111,6 +111,9 @@ private:
         /// split into its objects (one with a bound or a clip of its own; Parser::Link_To_Frame).
         bool bounds_kept = false;
         bool passes_photons = false;  ///< inside a light's looks_like object (add_looks_like)
+        /// The world ball around the bounded_by of the innermost union around with one: a
+        /// polynomial surface inside, which photon cannot bound, takes it as its gate.
+        std::optional<std::pair<Vector3, double>> bound_ball;
     };
 
     static Inherited inherit(const Object& o, const Inherited& parent) {
@@ -157,6 +160,7 @@ private:
                 warn_(o.at, "`inverse` on a `union` is ignored: photon adds a union's objects one by one",
                       "ignored effect", "inverse");
             mine.bounds_kept = parent.bounds_kept || !o.bounded_by.empty() || !o.clipped_by.empty();
+            if (!o.bounded_by.empty()) mine.bound_ball = world_ball(o.bounded_by, mine.transform);
             for (const auto& child : u->children) add(*child, mine);
             return;
         }
@@ -182,7 +186,15 @@ private:
             const ObjectOptions options = options_for(mine, material);
             warn_hollow_without_media(o, scene_->materials()[material]);
             const Transform& t = mine.transform;
-            std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
+            if (const auto* poly = std::get_if<PolynomialShape>(&o.shape); poly && !poly->gate && mine.bound_ball) {
+                // POV-Ray hides the surface from rays that miss the union's bound: a gate around
+                // it, in the surface's own coordinates, does the same (a little wider) and bounds it.
+                PolynomialShape gated = *poly;
+                gated.gate = ball_gate(*mine.bound_ball, t);
+                add_shape(gated, t, material, options);
+            } else {
+                std::visit([&](const auto& shape) { add_shape(shape, t, material, options); }, o.shape);
+            }
             object_at_.resize(scene_->objects().size(), o.at);
         } catch (const std::invalid_argument& e) {
             throw Error(o.at, e.what());
@@ -337,6 +349,44 @@ private:
                       "ignored effect", "clipped_by");
         }
         return trees.empty() ? tree : DefaultCsg<S>::clipped(std::move(tree), std::move(trees));
+    }
+
+    /// A world ball holding `bounds` (in the space `to_world` places): around their boxes. Empty
+    /// when one of them has no finite box.
+    std::optional<std::pair<Vector3, double>> world_ball(const std::vector<std::shared_ptr<const Object>>& bounds,
+                                                         const Transform& to_world) {
+        BBox<double> box;
+        bool finite = true;
+        for (const auto& b : bounds)
+            std::visit(
+                [&](const auto& shape) {
+                    if constexpr (requires { placement_.place(shape, to_world, [](const auto&) {}); }) {
+                        placement_.place(shape, b->transform.then(to_world), [&](const auto& placed) {
+                            const auto bb = placed.bounds();
+                            finite = finite && bb.is_finite();
+                            box.extend(BBox<double>{Vec3<double>(bb.min), Vec3<double>(bb.max)});
+                        });
+                    } else {
+                        finite = false;
+                    }
+                },
+                b->shape);
+        if (!finite || box.is_empty()) return std::nullopt;
+        const Vec3<double> c = 0.5 * (box.min + box.max);
+        return std::pair<Vector3, double>{Vector3(c), 0.5 * glm::length(box.max - box.min)};
+    }
+    /// A polynomial's sphere gate around world ball `ball`, in the coordinates `to_world` places:
+    /// the ball mapped back, widened by the inverse's largest stretch (its Frobenius norm, a bound).
+    static PolynomialShape::Gate ball_gate(const std::pair<Vector3, double>& ball, const Transform& to_world) {
+        const Transform to_local = to_world.inverse();
+        const glm::dmat3& m = to_local.linear;
+        double stretch = 0.0;
+        for (int i = 0; i < 3; ++i) stretch += glm::dot(m[i], m[i]);
+        PolynomialShape::Gate gate;
+        gate.sphere = true;
+        gate.center = to_local.point(ball.first);
+        gate.radius = ball.second * std::sqrt(stretch) * (1.0 + 1e-9);
+        return gate;
     }
 
     /// The `bounded_by` of `o` that photon could not show to hold it, where POV-Ray keeps it.
