@@ -48,3 +48,17 @@ TEMPLATE_TEST_CASE("occluders_in finds every object that can block a ray inside 
     CHECK(blocked < rays);
     CHECK(culled > 0);           // and the culling does something
 }
+
+TEMPLATE_TEST_CASE("occluders_in says when a region holds more objects than its limit", "[scene]", float, double) {
+    using S = TestType;
+    const auto box = cornell::make_cornell_box<S>();
+    const auto& scene = box.scene;
+    std::vector<std::uint32_t> all;
+    REQUIRE(scene.occluders_in(scene.bounds(), all));  // no limit: complete
+    REQUIRE(all.size() > 2);
+    std::vector<std::uint32_t> ids;
+    CHECK(scene.occluders_in(scene.bounds(), ids, all.size()));      // exactly at the limit: complete
+    CHECK(ids.size() == all.size());
+    CHECK_FALSE(scene.occluders_in(scene.bounds(), ids, all.size() - 1));  // one over: incomplete
+    CHECK(ids.size() <= all.size());
+}

@@ -99,7 +99,8 @@ public:
     /// callers that test a leaf's primitives together.
     template <class LeafFn> bool intersect_leaves(Ray<S>& ray, LeafFn&& leaf) const;
     template <class LeafFn> bool any_hit_leaves(const Ray<S>& ray, LeafFn&& leaf) const;
-    /// Calls `visit(leaf_position)` for every primitive in a leaf whose box overlaps `box`.
+    /// Calls `visit(leaf_position)` for every primitive in a leaf whose box overlaps `box`; a
+    /// `visit` that returns bool stops the walk by returning false.
     template <class VisitFn> void for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const;
 
 private:
@@ -373,7 +374,13 @@ void Bvh<S>::for_each_overlapping(const BBox<S>& box, VisitFn&& visit) const {
                 stack[top++] = node.first[c];
                 continue;
             }
-            for (std::uint32_t i = node.first[c]; i < node.first[c] + node.count[c]; ++i) visit(i);
+            for (std::uint32_t i = node.first[c]; i < node.first[c] + node.count[c]; ++i) {
+                if constexpr (std::is_same_v<std::invoke_result_t<VisitFn&, std::uint32_t>, bool>) {
+                    if (!visit(i)) return;
+                } else {
+                    visit(i);
+                }
+            }
         }
     }
 }

@@ -24,6 +24,10 @@
 
 namespace photon {
 
+/// The most objects an area light's shadow rays test one by one; past it a BVH walk per ray is
+/// cheaper than testing each of them against every ray.
+inline constexpr std::size_t occluder_list_limit = 32;
+
 /// How direct_lighting samples what it may choose.
 struct DirectLightOptions {
     /// Per light, whether it reaches what the camera sees (EffectsPlan::light_emits); null: all.
@@ -77,15 +81,17 @@ template <class SceneT, Scalar S>
         const bool shadows = light_casts_shadows(light);
         // All shadow rays to this light stay in the box around their origin and the light
         // (moved by the origin's offset, as the rays are), so only the objects touching that
-        // box can block them: found once here, not per ray.
-        const bool culled = shadows && count > 1;
-        if (culled) {
+        // box can block them: found once here, not per ray. Where the box holds many objects
+        // (a CSG sculpture of thousands of parts), each ray walks the BVH instead.
+        bool culled = false;
+        if (shadows && count > 1) {
             const Vec3<S> reach = light_center(light) + (shadow_origin - x);
             BBox<S> region = BBox<S>::of_point(shadow_origin);
             region.extend(BBox<S>{reach - light_radius(light), reach + light_radius(light)});
-            scene.occluders_in(region, ctx.occluders);
+            culled = scene.occluders_in(region, ctx.occluders, occluder_list_limit);
             // A wall across every ray to this light (a lamp in another room): none can arrive.
-            if (wall_between(scene, std::span<const std::uint32_t>(ctx.occluders), shadow_origin, reach, light_radius(light))) {
+            if (culled && wall_between(scene, std::span<const std::uint32_t>(ctx.occluders), shadow_origin, reach,
+                                       light_radius(light))) {
                 ++ctx.rays.walled_lights;
                 continue;
             }

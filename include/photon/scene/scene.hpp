@@ -215,7 +215,10 @@ public:
     /// The shadow-casting objects whose bounds touch `region` (infinite planes always), into
     /// `ids`. Many shadow rays that all stay inside one region (from a shading point to an area
     /// light) then need to test only these: one BVH query instead of one traversal per ray.
-    void occluders_in(const BBox<S>& region, std::vector<std::uint32_t>& ids) const;
+    /// False, with `ids` incomplete, when there are more than `limit`: testing every one of
+    /// them per ray would then cost more than the BVH's traversal.
+    bool occluders_in(const BBox<S>& region, std::vector<std::uint32_t>& ids,
+                      std::size_t limit = std::numeric_limits<std::size_t>::max()) const;
     /// occluded(ray) for a ray inside a region whose occluders_in() are `ids`.
     [[nodiscard]] bool occluded_by(std::span<const std::uint32_t> ids, const Ray<S>& ray) const {
         for (std::uint32_t id : ids)
@@ -347,7 +350,7 @@ template <Scalar S, Primitive... Shapes> bool Scene<S, Shapes...>::occluded(cons
 }
 
 template <Scalar S, Primitive... Shapes>
-void Scene<S, Shapes...>::occluders_in(const BBox<S>& region, std::vector<std::uint32_t>& ids) const {
+bool Scene<S, Shapes...>::occluders_in(const BBox<S>& region, std::vector<std::uint32_t>& ids, std::size_t limit) const {
     PHOTON_ASSERT(committed_);
     ids.clear();
     for (std::uint32_t id : unbounded_)
@@ -356,10 +359,15 @@ void Scene<S, Shapes...>::occluders_in(const BBox<S>& region, std::vector<std::u
     // them outside; far below the offset that lifts shading points off their surface.
     const S pad = S(4) * std::numeric_limits<S>::epsilon() * region.magnitude();
     const BBox<S> query{region.min - pad, region.max + pad};
+    if (ids.size() > limit) return false;
+    bool complete = true;
     bvh_.for_each_overlapping(query, [&](std::uint32_t i) {
         const std::uint32_t id = bvh_objects_[i];
         if (objects_[id].options.casts_shadow && object_bounds(id).overlaps(query)) ids.push_back(id);
+        complete = ids.size() <= limit;
+        return complete;
     });
+    return complete;
 }
 
 }  // namespace photon
