@@ -10,6 +10,11 @@
 
 namespace photon::dsl::detail {
 
+// DIRECTIVE: #declare .. | #local .. | #undef IDENTIFIER | #version FLOAT [;] | #include STRING
+//   | #if ( FLOAT ) | #ifdef ( IDENTIFIER ) | #ifndef ( IDENTIFIER ) | #elseif ( FLOAT ) | #else | #end
+//   | #while ( FLOAT ) | #for (..) | #switch (..) | #case (..) | #range (..) | #break | #macro ..
+//   | #warning STRING | #debug STRING | #error STRING | #default { .. } | #fopen .. | #fclose .. | #read (..)
+//   | #write (..) | #   (a `#` with no name after it is ignored)
 inline void Parser::directive(const Token& d) {
     if (d.text.empty()) {  // a `#` before no directive name: POV-Ray reads on as if it were not there
         warn(d.location, "`#` without a directive name after it is ignored, as POV-Ray does");
@@ -112,8 +117,11 @@ inline void Parser::directive(const Token& d) {
     }
 }
 
+// Whether `w` is a keyword of the language: no identifier, macro or file identifier may be named so.
 inline bool Parser::is_reserved(std::string_view w) const { return reserved_words().contains(w); }
 
+// DECLARE: (#declare | #local) [deprecated [once] STRING] IDENTIFIER = RVALUE [;]
+//   (the `;` may be left out after a BLOCK or a STRING; IDENTIFIER may be an array element A[i])
 inline void Parser::directive_declare(const Token& d, bool local) {
     const std::size_t home = files_.size(), depth = scopes_.size();
     Token id;
@@ -160,6 +168,9 @@ inline void Parser::directive_declare(const Token& d, bool local) {
         fail(after.location, "expected `;` after the value of `" + id.text + "`, found " + describe(after));
 }
 
+/// BLOCK: texture {..} {texture {..}} | pigment {..} | finish {..} | normal {..} | interior {..}
+///   | transform {..} | camera {..} | ARRAY | spline {..} | FUNCTION | material {..} | OBJECT | BLEND_MAP
+///   | sky_sphere {..} | fog {..} | media {..} | density {..} | rainbow {..} | BLOCK_IDENTIFIER
 /// A declarable block starting at `t` (texture { }, sphere { }, array[3], ...), or a declared
 /// identifier of a block's type; nullopt when `t` starts something else.
 inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
@@ -252,6 +263,7 @@ inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semic
     return n;
 }
 
+// UNDEF: #undef IDENTIFIER   (an identifier or a macro; not an array element)
 inline void Parser::directive_undef() {
     Token id;
     {
@@ -264,8 +276,9 @@ inline void Parser::directive_undef() {
     for (auto& scope : scopes_) scope.erase(id.text);
 }
 
-/// `( expression )` after #if, #elseif or #while. Directives are not run inside it (as in
-/// POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's condition.
+/// CONDITION: ( FLOAT ) after #if, #elseif or #while; true when not 0. Directives are not run
+/// inside it (as in POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's
+/// condition.
 inline bool Parser::parse_condition(const Token& d, bool& guard) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
@@ -280,6 +293,8 @@ inline bool Parser::parse_condition(const Token& d, bool& guard) {
     return v != 0.0;
 }
 
+// DEFINED_CONDITION: ( IDENTIFIER ) after #ifdef or #ifndef: whether it names a declared
+// identifier or a macro (the opposite for #ifndef).
 inline bool Parser::parse_defined_condition(const Token& d, bool negate, bool& guard) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
@@ -295,6 +310,9 @@ inline bool Parser::parse_defined_condition(const Token& d, bool negate, bool& g
     return (lookup(id.text) != nullptr || macros_.count(id.text) > 0) != negate;
 }
 
+// IF: #if ( FLOAT ) TOKENS {#elseif ( FLOAT ) TOKENS} [#else TOKENS] #end, #ifdef and #ifndef
+// alike: the branches before the first true one are skipped here; the rest, after it, by the
+// #else or #elseif that ends it (directive).
 inline void Parser::start_if(const Token& d, bool cond, bool guard) {
     for (;;) {
         if (cond) {
@@ -313,6 +331,7 @@ inline void Parser::start_if(const Token& d, bool cond, bool guard) {
     }
 }
 
+/// SKIPPED_BRANCH: {TOKEN | #if|#ifdef|#ifndef|#while|#for|#switch|#macro SKIPPED_BRANCH #end}
 /// Skips the current file's tokens up to the `#end` (or, with `stop_at_else`, an `#else` or
 /// `#elseif`) that belongs to the directive opened at `opened`; returns that directive.
 inline Token Parser::skip_branch(const SourceLocation& opened, const std::string& what, bool stop_at_else) {
@@ -336,6 +355,8 @@ inline Token Parser::skip_branch(const SourceLocation& opened, const std::string
     }
 }
 
+// WHILE: #while ( FLOAT ) TOKENS #end. At the #end: back to the condition, which is read
+// again; the body runs again while it holds, else it is skipped to the #end.
 inline void Parser::loop_again(CondFrame frame) {
     if (++frame.iterations > options_.max_loop_iterations)
         fail(frame.at, "`#while` loop ran more than " + std::to_string(options_.max_loop_iterations) +
@@ -350,10 +371,13 @@ inline void Parser::loop_again(CondFrame frame) {
     }
 }
 
+// Whether an open #if, #ifdef, #ifndef or #while tests photon_version: inside one the scene is written for
+// photon, so photon's own settings there need no warning that POV-Ray stops at them.
 inline bool Parser::in_photon_guard() const {
     return std::any_of(conds_.begin(), conds_.end(), [](const CondFrame& c) { return c.photon_guard; });
 }
 
+// DEFAULT: #default { {texture {..} | pigment {..} | finish {..} | normal {..}} }
 inline void Parser::directive_default(const Token& d) {
     open_block(d);
     for (;;) {

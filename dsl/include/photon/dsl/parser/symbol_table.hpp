@@ -10,6 +10,7 @@
 
 namespace photon::dsl::detail {
 
+// A global identifier set before the scene is read: photon_version and the caller's defines.
 inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
     scopes_.front()[name] = Value{std::move(v), at};
 }
@@ -22,6 +23,8 @@ inline const Value* Parser::lookup(const std::string& name) const {
     return nullptr;
 }
 
+// The value `name` has in `scope` alone, following a reference; an element `A[i]` is found in
+// its array there.
 inline const Value* Parser::lookup_in(std::size_t scope, const std::string& name) const {
     if (scope >= scopes_.size()) return nullptr;
     if (name.find('[') != std::string::npos) {  // split only an element's name: this runs for every name read
@@ -86,6 +89,8 @@ inline void Parser::assign(const Token& id, ValueData v, bool local) {
     store_at(scope, key, std::move(v), id.location);
 }
 
+// Stores `v` as `key` in `scope`: an element `A[i]` goes into its array (through a parameter that
+// refers to the array); a global name replaces a macro of that name.
 inline void Parser::store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at) {
     std::string base;
     std::vector<std::size_t> indices;
