@@ -22,6 +22,7 @@ enum class Spline : std::uint8_t { linear, quadratic, cubic, bezier };
 /// POV-Ray's EPSILON: points closer than this in x and in z are one point.
 inline constexpr double epsilon = 1e-10;
 
+/// Whether two outline points are one point, as POV-Ray judges it (within epsilon).
 [[nodiscard]] inline bool same_point(glm::dvec2 a, glm::dvec2 b) noexcept {
     return std::abs(a.x - b.x) < epsilon && std::abs(a.y - b.y) < epsilon;
 }

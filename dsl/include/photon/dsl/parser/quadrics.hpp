@@ -17,7 +17,7 @@ namespace quadric {
 inline constexpr double epsilon = 1e-10;
 }  // namespace quadric
 
-/// `open` after a cylinder's or cone's values (before its modifiers, as POV-Ray reads it).
+/// OPEN: [open] after a cylinder's or cone's values (before its modifiers, as POV-Ray reads it).
 inline bool Parser::accept_open() {
     if (!peek().is_identifier("open")) return false;
     next();
