@@ -96,7 +96,7 @@ inline constexpr double epsilon = 1e-10;
 
 }  // namespace prism
 
-// PRISM: prism { [SPLINE_TYPE] [SWEEP_TYPE] FLOAT , FLOAT , INT , UV_VECTOR {, UV_VECTOR} [open] [sturm] MODIFIERS }
+// PRISM: prism { {SPLINE_TYPE | SWEEP_TYPE} FLOAT [,] FLOAT [,] INT [,] {UV_VECTOR [,]} [open] [sturm] MODIFIERS }
 //   SPLINE_TYPE: linear_spline | quadratic_spline | cubic_spline | bezier_spline
 //   SWEEP_TYPE: linear_sweep | conic_sweep
 // The points are <x, z> of the xz plane; the prism spans y from the lower height to the higher.

@@ -341,7 +341,7 @@ inline void Parser::check_arity(const UserFunction& f, std::size_t n, const Toke
                                 std::to_string(n));
 }
 
-// CALL: FUNCTION_IDENTIFIER ( FLOAT {, FLOAT} ), in an expression: evaluated now.
+// CALL: FUNCTION_IDENTIFIER ( [FLOAT {, FLOAT}] ), in an expression: evaluated now.
 inline Numeric Parser::call_function_value(const Token& t, const UserFunction& f) {
     expect_symbol("(", "after the function `" + t.text + "`");
     const bool saved = in_vector_;
