@@ -43,6 +43,7 @@ namespace photon::dsl {
 #if !(defined(PHOTON_DSL_SEPARATE_COMPILATION) && PHOTON_DSL_SEPARATE_COMPILATION) || defined(PHOTON_DSL_COMPILING_PARSER)
 #include "parser/token_stream.hpp"
 #include "parser/scene_files.hpp"
+#include "parser/symbol_table.hpp"
 #include "parser/directives.hpp"
 #include "parser/macros.hpp"
 #include "parser/control_flow.hpp"

@@ -45,7 +45,8 @@ inline Array Parser::parse_array(const Token& kw) {
     return a;
 }
 
-/// ELEMENTS: { RVALUE {, RVALUE} } for the last dimension, { ELEMENTS {, ELEMENTS} } before it.
+/// ELEMENTS: { RVALUE {[,] RVALUE} [,] } for the last dimension, { ELEMENTS {[,] ELEMENTS} [,] }
+/// before it; each RVALUE read without comparisons (parse_rvalue's sums_only).
 inline void Parser::parse_array_initialiser(Array& a, std::size_t dim, std::size_t& next_index, const Token& kw) {
     const Nest nest(*this, peek().location);
     const Token open = expect_symbol("{", "to open the elements of the array");
@@ -72,6 +73,8 @@ inline void Parser::parse_array_initialiser(Array& a, std::size_t dim, std::size
     next();
 }
 
+// Stores `v` at `index` of `a`: of the array's one type unless it is `mixed`; the elements are copied first
+// when another value shares them, and counted against max_array_elements when made.
 inline void Parser::set_element(Array& a, std::size_t index, ValueData v, const std::string& name,
                                 const SourceLocation& at) {
     const int kind = int(v.index());
@@ -99,7 +102,8 @@ inline void Parser::set_element(Array& a, std::size_t index, ValueData v, const 
     (*a.elements)[index] = std::make_shared<const Value>(Value{std::move(v), at});
 }
 
-/// `A [ FLOAT ] ...` after the identifier `t` of an array: `t` becomes the element's name.
+/// ARRAY_ELEMENT: ARRAY_IDENT [ FLOAT ] {[ FLOAT ]}, an index for each dimension, after the
+/// identifier `t` of an array: `t` becomes the element's name.
 inline void Parser::expand_array_element(Token& t) {
     const Value* v = lookup(t.text);
     const Array* found = v ? std::get_if<Array>(&v->data) : nullptr;
@@ -145,6 +149,7 @@ inline void Parser::expand_array_element(Token& t) {
     }
 }
 
+// The error for an element read before it is set.
 [[noreturn]] inline void Parser::fail_unset_element(const Token& t, const Value& array) {
     fail(t.location, "the array element `" + t.text + "` is used before it is set (the array is declared at " +
                          position_in(array.at, t.location) + ")");
@@ -169,6 +174,8 @@ inline bool Parser::split_element(const std::string& name, std::string& base, st
     return true;
 }
 
+// The index into the elements of `a` of the element at `indices`, row by row; past the end when an
+// index is out of bounds.
 inline std::size_t Parser::flat_index(const Array& a, const std::vector<std::size_t>& indices) {
     std::size_t flat = 0;
     for (std::size_t d = 0; d < indices.size() && d < a.sizes.size(); ++d) {
@@ -178,7 +185,7 @@ inline std::size_t Parser::flat_index(const Array& a, const std::vector<std::siz
     return flat;
 }
 
-// dimensions ( ARRAY ) | dimension_size ( ARRAY , FLOAT )
+// ARRAY_FUNCTION: dimensions ( ARRAY_IDENT ) | dimension_size ( ARRAY_IDENT , INT )
 inline Numeric Parser::parse_array_function(const Token& f) {
     expect_symbol("(", "after `" + f.text + "`");
     const Token id = next();

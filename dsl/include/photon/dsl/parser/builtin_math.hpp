@@ -62,6 +62,7 @@ inline constexpr FloatBuiltinInfo float_builtins[] = {
     {"select", FloatBuiltin::select, 3, 4},
 };
 
+/// The float built-in named `name` (its arity and operation), or null when there is none.
 [[nodiscard]] inline const FloatBuiltinInfo* find_float_builtin(std::string_view name) {
     for (const auto& b : float_builtins)
         if (b.name == name) return &b;

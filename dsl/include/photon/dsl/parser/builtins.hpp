@@ -8,6 +8,9 @@
 
 namespace photon::dsl::detail {
 
+// BUILTIN: defined ( IDENTIFIER ) | select ( FLOAT , EXPRESSION , EXPRESSION [, EXPRESSION] )
+//   | rand ( FLOAT ) | seed ( FLOAT ) | FLOAT_FUNCTION ( [EXPRESSION {, EXPRESSION}] ) | VECTOR_FUNCTION
+//   | STRING_MEASURE (strings.hpp) | INSIDE (object_queries.hpp)
 inline Numeric Parser::parse_function(const Token& f) {
     const std::string& w = f.text;
     if (one_of(w, {"strlen", "val", "asc", "strcmp", "file_exists"})) return parse_string_measure(f);

@@ -21,7 +21,7 @@ inline void Parser::directive_switch(const Token& d) {
     skip_to_case(d);
 }
 
-/// `( FLOAT )` after #case, `( FLOAT , FLOAT )` after #range: does the switch's value match?
+/// CASE: ( FLOAT ) after #case, ( FLOAT , FLOAT ) after #range: does the switch's value match?
 inline bool Parser::case_matches(const Token& d) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
@@ -37,7 +37,9 @@ inline bool Parser::case_matches(const Token& d) {
     return d.text == "case" ? std::abs(v - a) < 1e-10 : v >= a && v <= b;
 }
 
-/// Skips to the first #case or #range that matches, an #else, or the switch's #end.
+/// SKIPPED_CASES: {TOKEN | #if|#ifdef|#ifndef|#while|#for|#switch|#macro .. #end} (#case CASE |
+/// #range CASE | #else | #end): skips to the first #case or #range that matches, an #else, or the
+/// switch's #end.
 inline void Parser::skip_to_case(const Token& d) {
     int depth = 0;
     for (;;) {
@@ -66,15 +68,15 @@ inline void Parser::skip_to_case(const Token& d) {
     }
 }
 
-/// #case or #range met while a matching case runs: read and ignored (fall-through).
+/// FALL_THROUGH: (#case | #range) CASE met while a matching case runs: read and ignored.
 inline void Parser::directive_case(const Token& d) {
     if (conds_.empty() || conds_.back().file_depth != files_.size() || conds_.back().kind != CondKind::switch_)
         fail(d.location, "`#" + d.text + "` without a matching `#switch`");
     case_matches(d);
 }
 
-/// #break: leaves the innermost #switch, #while or #for (skipping to the #end of each #if it is
-/// in), or else returns from the running macro.
+/// BREAK: #break — leaves the innermost #switch, #while or #for (skipping to the #end of each
+/// #if it is in), or else returns from the running macro.
 inline void Parser::directive_break(const Token& d) {
     for (std::size_t i = conds_.size(); i-- > 0 && conds_[i].file_depth == files_.size();)
         if (conds_[i].kind != CondKind::if_) {
@@ -97,7 +99,7 @@ inline void Parser::skip_to_end_of(std::size_t frame) {
     }
 }
 
-// FOR: #for ( IDENTIFIER , FLOAT , FLOAT [, FLOAT] ) TOKENS #end
+// FOR: #for ( IDENTIFIER [,] FLOAT [,] FLOAT [, FLOAT] ) TOKENS #end
 inline void Parser::directive_for(const Token& d) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#for`");

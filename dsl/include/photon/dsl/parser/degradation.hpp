@@ -21,6 +21,8 @@ inline constexpr std::string_view approximated_light = "approximated light";
 inline constexpr std::string_view ignored_effect = "ignored effect";
 }  // namespace degraded
 
+// A warning about a construct photon reads but does not render, once for each place and message,
+// with its kind and keyword for `photon check`'s summary (and --strict).
 inline void Parser::degrade(const SourceLocation& at, std::string_view kind, std::string_view keyword,
                             const std::string& message) {
     if (!warned_.insert(at.str() + '\x1f' + message).second) return;
@@ -45,6 +47,7 @@ inline Object Parser::parse_skipped_object(const Token& kw) {
     return obj;
 }
 
+// Whether `w` starts an object: one photon renders or one it skips.
 inline bool Parser::is_object_keyword(std::string_view w) const {
     return one_of(w, object_keywords) || one_of(w, unsupported_objects);
 }

@@ -2,13 +2,19 @@
 #pragma once
 // Directives other than `#include`: #declare/#local/#undef, #if/#ifdef/#ifndef/#else/#elseif,
 // #while, #default and the messages. They are run in the token stream (peek), so they may appear
-// anywhere, as in POV-Ray.
+// anywhere, as in POV-Ray. The identifiers they declare are kept in symbol_table.hpp.
 
 #include "degradation.hpp"
 #include "parser_class.hpp"
+#include "symbol_table.hpp"
 
 namespace photon::dsl::detail {
 
+// DIRECTIVE: #declare .. | #local .. | #undef IDENTIFIER | #version FLOAT [;] | #include STRING
+//   | #if ( FLOAT ) | #ifdef ( IDENTIFIER ) | #ifndef ( IDENTIFIER ) | #elseif ( FLOAT ) | #else | #end
+//   | #while ( FLOAT ) | #for (..) | #switch (..) | #case (..) | #range (..) | #break | #macro ..
+//   | #warning STRING | #debug STRING | #error STRING | #default { .. } | #fopen .. | #fclose .. | #read (..)
+//   | #write (..) | #   (a `#` with no name after it is ignored)
 inline void Parser::directive(const Token& d) {
     if (d.text.empty()) {  // a `#` before no directive name: POV-Ray reads on as if it were not there
         warn(d.location, "`#` without a directive name after it is ignored, as POV-Ray does");
@@ -111,42 +117,11 @@ inline void Parser::directive(const Token& d) {
     }
 }
 
+// Whether `w` is a keyword of the language: no identifier, macro or file identifier may be named so.
 inline bool Parser::is_reserved(std::string_view w) const { return reserved_words().contains(w); }
 
-inline void Parser::declare_global(const std::string& name, ValueData v, const SourceLocation& at) {
-    scopes_.front()[name] = Value{std::move(v), at};
-}
-
-/// The value `name` has in the innermost scope that declares it, following macro parameters
-/// passed by reference; `A[i][j]` (as the token stream writes an element) names an element.
-inline const Value* Parser::lookup(const std::string& name) const {
-    for (std::size_t i = scopes_.size(); i-- > 0;)
-        if (const Value* v = lookup_in(i, name)) return v;
-    return nullptr;
-}
-
-inline const Value* Parser::lookup_in(std::size_t scope, const std::string& name) const {
-    if (scope >= scopes_.size()) return nullptr;
-    if (name.find('[') != std::string::npos) {  // split only an element's name: this runs for every name read
-        std::string base;
-        std::vector<std::size_t> indices;
-        split_element(name, base, indices);
-        const auto f = scopes_[scope].find(base);
-        const Value* v = f == scopes_[scope].end() ? nullptr : follow(&f->second);
-        const Array* a = v ? std::get_if<Array>(&v->data) : nullptr;
-        if (!a || !a->elements || indices.size() != a->sizes.size()) return nullptr;
-        const std::size_t i = flat_index(*a, indices);
-        return i < a->elements->size() ? (*a->elements)[i].get() : nullptr;
-    }
-    const auto f = scopes_[scope].find(name);
-    return f == scopes_[scope].end() ? nullptr : follow(&f->second);
-}
-
-/// A reference names a scope below its own, so following references ends.
-inline const Value* Parser::follow(const Value* v) const {
-    return v && v->is_reference() ? lookup_in(v->ref_scope, v->ref_name) : v;
-}
-
+// DECLARE: (#declare | #local) [deprecated [once] STRING] IDENTIFIER = RVALUE [;]
+//   (the `;` may be left out after a BLOCK or a STRING; IDENTIFIER may be an array element A[i])
 inline void Parser::directive_declare(const Token& d, bool local) {
     const std::size_t home = files_.size(), depth = scopes_.size();
     Token id;
@@ -193,6 +168,9 @@ inline void Parser::directive_declare(const Token& d, bool local) {
         fail(after.location, "expected `;` after the value of `" + id.text + "`, found " + describe(after));
 }
 
+/// BLOCK: texture {..} {texture {..}} | pigment {..} | finish {..} | normal {..} | interior {..}
+///   | transform {..} | camera {..} | ARRAY | spline {..} | FUNCTION | material {..} | OBJECT | BLEND_MAP
+///   | sky_sphere {..} | fog {..} | media {..} | density {..} | rainbow {..} | BLOCK_IDENTIFIER
 /// A declarable block starting at `t` (texture { }, sphere { }, array[3], ...), or a declared
 /// identifier of a block's type; nullopt when `t` starts something else.
 inline std::optional<ValueData> Parser::parse_block_value(const Token& t) {
@@ -285,68 +263,7 @@ inline ValueData Parser::parse_rvalue(const std::string& what, bool& needs_semic
     return n;
 }
 
-/// `#declare` changes the identifier where it is visible (a macro's parameter, an include
-/// file's local, the caller's identifier a parameter refers to) and makes a new one global;
-/// `#local` makes or changes one in the innermost scope. These are POV-Ray's rules.
-inline void Parser::assign(const Token& id, ValueData v, bool local) {
-    std::string base;
-    std::vector<std::size_t> indices;
-    const bool element = split_element(id.text, base, indices);
-    std::size_t found = Value::no_ref;
-    for (std::size_t i = scopes_.size(); i-- > 0;)
-        if (scopes_[i].count(base)) {
-            found = i;
-            break;
-        }
-    if (element && found == Value::no_ref) fail(id.location, "undefined array `" + base + "`");
-    if (element && local && found != scopes_.size() - 1)
-        fail(id.location, "cannot use `#local` to assign an element of `" + base +
-                              "`, which is not local here: use `#declare`");
-    std::size_t scope = found;
-    std::string key = base;
-    if (local && found != scopes_.size() - 1) {
-        scope = scopes_.size() - 1;
-    } else if (found == Value::no_ref) {
-        scope = 0;
-    } else {
-        // Follow parameters passed by reference to the identifier they name.
-        for (;;) {
-            const auto f = scopes_[scope].find(key);
-            if (f == scopes_[scope].end() || !f->second.is_reference()) break;
-            const std::size_t s = f->second.ref_scope;
-            key = f->second.ref_name;
-            scope = s;
-            if (key.find('[') != std::string::npos) break;
-        }
-    }
-    if (element) {
-        if (key.find('[') != std::string::npos)
-            fail(id.location, "`" + base + "` refers to an array element, not an array: cannot index it");
-        key += id.text.substr(base.size());
-    }
-    store_at(scope, key, std::move(v), id.location);
-}
-
-inline void Parser::store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at) {
-    std::string base;
-    std::vector<std::size_t> indices;
-    if (!split_element(key, base, indices)) {
-        if (scope == 0) macros_.erase(key);
-        scopes_[scope][key] = Value{std::move(v), at};
-        return;
-    }
-    const auto f = scopes_[scope].find(base);
-    if (f != scopes_[scope].end() && f->second.is_reference()) {
-        const std::size_t to = f->second.ref_scope;
-        store_at(to, f->second.ref_name + key.substr(base.size()), std::move(v), at);
-        return;
-    }
-    Array* a = f == scopes_[scope].end() ? nullptr : std::get_if<Array>(&f->second.data);
-    if (!a) fail(at, "`" + base + "` is not an array");
-    if (indices.size() != a->sizes.size()) fail(at, "`" + key + "`: wrong number of indices");
-    set_element(*a, flat_index(*a, indices), std::move(v), key, at);
-}
-
+// UNDEF: #undef IDENTIFIER   (an identifier or a macro; not an array element)
 inline void Parser::directive_undef() {
     Token id;
     {
@@ -359,8 +276,9 @@ inline void Parser::directive_undef() {
     for (auto& scope : scopes_) scope.erase(id.text);
 }
 
-/// `( expression )` after #if, #elseif or #while. Directives are not run inside it (as in
-/// POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's condition.
+/// CONDITION: ( FLOAT ) after #if, #elseif or #while; true when not 0. Directives are not run
+/// inside it (as in POV-Ray): `#if #end` is an error here, not an `#end` that re-enters a loop's
+/// condition.
 inline bool Parser::parse_condition(const Token& d, bool& guard) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
@@ -375,6 +293,8 @@ inline bool Parser::parse_condition(const Token& d, bool& guard) {
     return v != 0.0;
 }
 
+// DEFINED_CONDITION: ( IDENTIFIER ) after #ifdef or #ifndef: whether it names a declared
+// identifier or a macro (the opposite for #ifndef).
 inline bool Parser::parse_defined_condition(const Token& d, bool negate, bool& guard) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#" + d.text + "`");
@@ -390,6 +310,9 @@ inline bool Parser::parse_defined_condition(const Token& d, bool negate, bool& g
     return (lookup(id.text) != nullptr || macros_.count(id.text) > 0) != negate;
 }
 
+// IF: #if ( FLOAT ) TOKENS {#elseif ( FLOAT ) TOKENS} [#else TOKENS] #end, #ifdef and #ifndef
+// alike: the branches before the first true one are skipped here; the rest, after it, by the
+// #else or #elseif that ends it (directive).
 inline void Parser::start_if(const Token& d, bool cond, bool guard) {
     for (;;) {
         if (cond) {
@@ -408,6 +331,7 @@ inline void Parser::start_if(const Token& d, bool cond, bool guard) {
     }
 }
 
+/// SKIPPED_BRANCH: {TOKEN | #if|#ifdef|#ifndef|#while|#for|#switch|#macro SKIPPED_BRANCH #end}
 /// Skips the current file's tokens up to the `#end` (or, with `stop_at_else`, an `#else` or
 /// `#elseif`) that belongs to the directive opened at `opened`; returns that directive.
 inline Token Parser::skip_branch(const SourceLocation& opened, const std::string& what, bool stop_at_else) {
@@ -431,6 +355,8 @@ inline Token Parser::skip_branch(const SourceLocation& opened, const std::string
     }
 }
 
+// WHILE: #while ( FLOAT ) TOKENS #end. At the #end: back to the condition, which is read
+// again; the body runs again while it holds, else it is skipped to the #end.
 inline void Parser::loop_again(CondFrame frame) {
     if (++frame.iterations > options_.max_loop_iterations)
         fail(frame.at, "`#while` loop ran more than " + std::to_string(options_.max_loop_iterations) +
@@ -445,10 +371,13 @@ inline void Parser::loop_again(CondFrame frame) {
     }
 }
 
+// Whether an open #if, #ifdef, #ifndef or #while tests photon_version: inside one the scene is written for
+// photon, so photon's own settings there need no warning that POV-Ray stops at them.
 inline bool Parser::in_photon_guard() const {
     return std::any_of(conds_.begin(), conds_.end(), [](const CondFrame& c) { return c.photon_guard; });
 }
 
+// DEFAULT: #default { {texture {..} | pigment {..} | finish {..} | normal {..}} }
 inline void Parser::directive_default(const Token& d) {
     open_block(d);
     for (;;) {

@@ -7,6 +7,7 @@
 
 namespace photon::dsl::detail {
 
+// NAMED_EXPRESSION: EXPRESSION, with `what` naming it in messages ("expected WHAT, found ...").
 inline Numeric Parser::parse_expression_for(const std::string& what) {
     const std::string saved = expecting_;
     expecting_ = what;
@@ -15,6 +16,7 @@ inline Numeric Parser::parse_expression_for(const std::string& what) {
     return n;
 }
 
+// EXPRESSION: OR [? EXPRESSION : EXPRESSION]   (the condition a float, true when not 0)
 inline Numeric Parser::parse_expression() {
     const Nest nest(*this, peek().location);
     Numeric c = parse_or();
@@ -29,6 +31,7 @@ inline Numeric Parser::parse_expression() {
     return c;
 }
 
+// OR: AND {| AND}   (floats, true when not 0)
 inline Numeric Parser::parse_or() {
     Numeric a = parse_and();
     while (peek().is_symbol("|")) {
@@ -39,6 +42,7 @@ inline Numeric Parser::parse_or() {
     return a;
 }
 
+// AND: RELATION {& RELATION}   (floats, true when not 0)
 inline Numeric Parser::parse_and() {
     Numeric a = parse_relation();
     while (peek().is_symbol("&")) {
@@ -82,6 +86,8 @@ inline Numeric Parser::parse_relation() {
     return a;
 }
 
+// a + b, a - b, a * b or a / b, component by component (a float promoted); a division by zero or a
+// result that is not finite is an error at `op`.
 inline Numeric Parser::combine(const Numeric& a, const Numeric& b, const Token& op) {
     Numeric r;
     r.dim = std::max(a.dim, b.dim);
@@ -110,6 +116,7 @@ inline Numeric Parser::combine(const Numeric& a, const Numeric& b, const Token& 
     return r;
 }
 
+// SUM: PRODUCT {(+ | -) PRODUCT}
 inline Numeric Parser::parse_sum() {
     Numeric a = parse_product();
     while (peek().is_symbol("+") || peek().is_symbol("-")) {
@@ -119,6 +126,7 @@ inline Numeric Parser::parse_sum() {
     return a;
 }
 
+// PRODUCT: UNARY {(* | /) UNARY}
 inline Numeric Parser::parse_product() {
     Numeric a = parse_unary();
     while (peek().is_symbol("*") || peek().is_symbol("/")) {
@@ -128,6 +136,7 @@ inline Numeric Parser::parse_product() {
     return a;
 }
 
+// UNARY: (- | + | !) UNARY | POSTFIX
 inline Numeric Parser::parse_unary() {
     const Token& t = peek();
     if (t.is_symbol("-") || t.is_symbol("+") || t.is_symbol("!")) {
@@ -172,6 +181,9 @@ inline Numeric Parser::parse_postfix() {
     return v;
 }
 
+// PRIMARY: NUMBER | ( EXPRESSION ) | < EXPRESSION {[,] EXPRESSION} [,] > | IDENTIFIER_VALUE
+//   (a vector has 2 to 5 float components, comparisons in them in parentheses), or the call of a
+//   function whose name #declare has read
 inline Numeric Parser::parse_primary() {
     if (pending_call_) {  // a function call whose name #declare has read already
         const Token f = std::move(*pending_call_);
@@ -219,6 +231,11 @@ inline Numeric Parser::parse_primary() {
     fail_expected(expecting_.empty() ? std::string("a number or vector") : expecting_, t);
 }
 
+// IDENTIFIER_VALUE: COLOR | CONSTANT | ARRAY_FUNCTION | BUILTIN ( ARGS ) | OBJECT_QUERY
+//   | FLOAT_IDENT | VECTOR_IDENT | FUNCTION_IDENT ( ARGS ) | SPLINE_CALL
+// CONSTANT: pi | tau | x | y | z | t | u | v | true | yes | on | false | no | off | version | clock
+//   | clock_on | clock_delta | initial_clock | final_clock | frame_number | initial_frame | final_frame
+//   | image_width | image_height
 inline Numeric Parser::parse_identifier_value(const Token& t) {
     const std::string& w = t.text;
     if (color_words().contains(w)) return Numeric::from_color(parse_color(expecting_));

@@ -22,7 +22,7 @@ inline std::string pov_g(double v) {
     return buf;
 }
 
-// FOPEN: #fopen FILE_ID "name" read | write | append
+// FOPEN: #fopen FILE_ID STRING (read | write | append)
 inline void Parser::directive_fopen(const Token& d) {
     const Token id = next();
     if (id.kind != TokenKind::identifier || is_reserved(id.text))
@@ -54,12 +54,14 @@ inline void Parser::directive_fopen(const Token& d) {
     assign(id, std::string("file \"" + name.text + "\""), false);
 }
 
+// The file #fopen opened as `id`, else an error in `#directive`.
 inline Parser::OpenFile& Parser::open_file(const Token& id, const std::string& directive) {
     const auto it = id.kind == TokenKind::identifier ? open_files_.find(id.text) : open_files_.end();
     if (it == open_files_.end()) fail_expected("a file opened with `#fopen` in `#" + directive + "`", id);
     return it->second;
 }
 
+// Forgets the file `id` and its identifier, in every scope.
 inline void Parser::close_file(const std::string& id) {
     open_files_.erase(id);
     for (auto& scope : scopes_) scope.erase(id);
@@ -73,7 +75,7 @@ inline void Parser::directive_fclose(const Token& d) {
     if (open_files_.count(id.text)) close_file(id.text);  // closing a closed file is harmless, as in POV-Ray
 }
 
-// WRITE: #write ( FILE_ID , ITEM [, ITEM]... )   ITEM: STRING | FLOAT | VECTOR
+// WRITE: #write ( FILE_ID {[,] ITEM} )   ITEM: STRING | FLOAT | VECTOR
 inline void Parser::directive_write(const Token& d) {
     suppress_.push_back(files_.size());
     expect_symbol("(", "after `#write`");
@@ -113,7 +115,7 @@ inline void Parser::directive_write(const Token& d) {
     file += out;
 }
 
-// READ: #read ( FILE_ID , IDENTIFIER [, IDENTIFIER]... ). At the end of the file the file
+// READ: #read ( FILE_ID {, IDENTIFIER} ). At the end of the file the file
 // identifier becomes undefined (POV-Ray's `#while (defined(F)) #read (F, V) ... #end`).
 inline void Parser::directive_read(const Token& d) {
     suppress_.push_back(files_.size());

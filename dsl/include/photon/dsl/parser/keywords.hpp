@@ -47,6 +47,8 @@ struct Words {
     [[nodiscard]] std::size_t size() const noexcept { return list.size(); }
 };
 
+/// Whether `w` is one of `list`, searched in order; the tables asked about every token are sets
+/// (reserved_words() and the others below).
 inline bool one_of(std::string_view w, Words list) { return std::find(list.begin(), list.end(), w) != list.end(); }
 
 /// Keyword tables joined into one hash set, for the questions the interpreter asks of every
@@ -215,14 +217,17 @@ inline const WordSet& expression_words() {
                              {"dimensions", "dimension_size"}};
     return set;
 }
+/// The constants (pi, clock, ...), which an expression reads as values.
 inline const WordSet& constant_words() {
     static const WordSet set{constants};
     return set;
 }
+/// The numeric built-in functions, which an expression reads as calls.
 inline const WordSet& builtin_function_words() {
     static const WordSet set{functions};
     return set;
 }
+/// The words that start a colour (color, rgb, red, ...), which an expression reads as one.
 inline const WordSet& color_words() {
     static const WordSet set{color_keywords};
     return set;

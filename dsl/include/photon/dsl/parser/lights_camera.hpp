@@ -9,6 +9,11 @@ namespace photon::dsl::detail {
 
 inline constexpr double radians_per_degree = 3.14159265358979323846 / 180.0;
 
+// LIGHT_SOURCE: light_source { (LIGHT_IDENT | VECTOR [,] COLOR) {LIGHT_ITEM | TRANSFORMATION} }
+// LIGHT_ITEM: spotlight | point_at V | radius F | falloff F | tightness F | area_light V [,] V [,] INT [,] INT
+//   | adaptive INT | jitter BOOL | circular BOOL | orient BOOL | area_illumination BOOL | fade_distance F
+//   | fade_power F | shadowless | looks_like { (OBJECT | OBJECT_IDENT) MODIFIERS } | media_interaction BOOL
+//   | media_attenuation BOOL | photons { .. } | parallel | cylinder | projected_through { OBJECT | OBJECT_IDENT }
 inline Object Parser::parse_light(const Token& kw) {
     open_block(kw);
     Object obj;
@@ -155,6 +160,7 @@ inline Object Parser::parse_light(const Token& kw) {
     return obj;
 }
 
+// LIGHT_PHOTONS: photons { {reflection BOOL | refraction BOOL | area_light BOOL} }
 inline void Parser::parse_light_photons(const Token& kw, LightSource& light) {
     const Nest nest(*this, kw.location);
     open_block(kw);
@@ -176,7 +182,7 @@ inline void Parser::parse_light_photons(const Token& kw, LightSource& light) {
     close_block(kw, "`reflection`, `refraction` or `area_light`", {"reflection", "refraction", "area_light"});
 }
 
-// camera { [CAMERA_ID] [TYPE] ITEM* }   TYPE: perspective | orthographic | fisheye | ultra_wide_angle
+// CAMERA: camera { [CAMERA_ID] [TYPE] ITEM* }   TYPE: perspective | orthographic | fisheye | ultra_wide_angle
 //   | omnimax | panoramic | spherical | cylinder 1..4 | mesh_camera {..} | user_defined {..}
 // ITEM: location V | look_at V | up V | right V | direction V | sky V | angle F [, F] | aperture F
 //   | focal_point V | blur_samples F [, F] | confidence F | variance F | normal {..} | TRANSFORM

@@ -9,6 +9,7 @@
 
 namespace photon::dsl::detail {
 
+/// BLOCK_IDENT: [T_IDENT], a declared `T` at the start of a block.
 /// A declared `T` at the start of a block (`texture { T_Ident ...`), copied into `out`. Any
 /// other declared type is an error naming `what` was expected, except numbers and colours
 /// where `numbers_allowed`.
@@ -171,6 +172,8 @@ inline Finish Parser::parse_finish(const Token& kw, Finish f) {
     return f;
 }
 
+// REFLECTION: reflection COLOR | reflection { COLOR [[,] COLOR] {fresnel BOOL | falloff F
+//   | exponent F | metallic [F]} }   (COLOR any expression: a float is grey; each >= 0)
 inline Reflection Parser::parse_reflection(const Token& kw) {
     Reflection r;
     r.at = kw.location;

@@ -8,11 +8,14 @@
 
 namespace photon::dsl::detail {
 
+// The object's texture, made from the #default one when it has none yet: a pigment, finish or
+// normal written alone goes into it.
 inline Texture& Parser::ensure_texture(Object& obj) {
     if (!obj.texture) obj.texture = default_texture_;
     return *obj.texture;
 }
 
+// Counts `n` more primitives (objects, triangles) in `obj`, within ParseOptions::max_primitives.
 inline void Parser::add_primitives(Object& obj, std::size_t n, const SourceLocation& at) {
     obj.primitives += n;
     if (obj.primitives > options_.max_primitives)
@@ -220,6 +223,8 @@ inline MeshFile Parser::parse_mesh_file(const Token& kw) {
     return MeshFile{resolved, s.text, s.location};
 }
 
+// TRIANGLE_CORNERS: V [,] V [,] V after `triangle {`; V [,] N [,] V [,] N [,] V [,] N after
+//   `smooth_triangle {` (the normals read and ignored)
 inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {
     TriangleShape t;
     const bool smooth = kw.text == "smooth_triangle";
@@ -237,6 +242,7 @@ inline TriangleShape Parser::parse_triangle_corners(const Token& kw) {
     return t;
 }
 
+// MATERIAL: material { [MATERIAL_IDENT] {texture {..} | interior {..}} }
 inline void Parser::parse_material(const Token& kw, Object& obj) {
     const Nest nest(*this, kw.location);
     open_block(kw);
@@ -259,6 +265,10 @@ inline void Parser::parse_material(const Token& kw, Object& obj) {
     close_block(kw, "`texture` or `interior`", {"texture", "interior"});
 }
 
+// MODIFIERS: {TRANSFORMATION | texture {..} | pigment {..} | finish {..} | normal {..} | interior {..}
+//   | material {..} | photons {..} | no_shadow | inverse | hollow BOOL | no_image | no_reflection
+//   | no_radiosity | double_illuminate | uv_mapping | sturm BOOL | inside_vector V (a mesh's)
+//   | interior_texture {..} | bounded_by {..} | clipped_by {..}}
 inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
     bool had_texture = false;
     for (;;) {
@@ -333,6 +343,8 @@ inline void Parser::parse_modifiers(const Token& kw, Object& obj) {
     }
 }
 
+// OBJECT_PHOTONS: photons { {target [F] | reflection BOOL | refraction BOOL | collect BOOL
+//   | pass_through BOOL | split_union BOOL} }
 inline ObjectPhotons Parser::parse_object_photons(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);

@@ -155,15 +155,9 @@ private:
     // directives.hpp
     void directive(const Token& d);
     bool is_reserved(std::string_view w) const;
-    void declare_global(const std::string& name, ValueData v, const SourceLocation& at);
-    const Value* lookup(const std::string& name) const;
-    const Value* lookup_in(std::size_t scope, const std::string& name) const;
-    const Value* follow(const Value* v) const;
     void directive_declare(const Token& d, bool local);
     std::optional<ValueData> parse_block_value(const Token& t);
     ValueData parse_rvalue(const std::string& what, bool& needs_semicolon, bool sums_only = false);
-    void assign(const Token& id, ValueData v, bool local);
-    void store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at);
     void directive_undef();
     bool parse_condition(const Token& d, bool& guard);
     bool parse_defined_condition(const Token& d, bool negate, bool& guard);
@@ -172,6 +166,14 @@ private:
     void loop_again(CondFrame frame);
     bool in_photon_guard() const;
     void directive_default(const Token& d);
+
+    // symbol_table.hpp (the storage is scopes_, below)
+    void declare_global(const std::string& name, ValueData v, const SourceLocation& at);
+    const Value* lookup(const std::string& name) const;
+    const Value* lookup_in(std::size_t scope, const std::string& name) const;
+    const Value* follow(const Value* v) const;
+    void assign(const Token& id, ValueData v, bool local);
+    void store_at(std::size_t scope, const std::string& key, ValueData v, const SourceLocation& at);
 
     // macros.hpp
     void directive_macro(const Token& d);
@@ -394,7 +396,7 @@ private:
     const ParseOptions& options_;
     SceneDescription scene_;
     std::vector<FileFrame> files_;
-    std::vector<std::unordered_map<std::string, Value>> scopes_;
+    std::vector<std::unordered_map<std::string, Value>> scopes_;  ///< the symbol table (symbol_table.hpp)
     std::vector<CondFrame> conds_;
     std::optional<Token> lookahead_;
     std::unordered_map<std::string, std::shared_ptr<const Macro>> macros_;

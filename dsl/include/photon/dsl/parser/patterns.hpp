@@ -69,6 +69,7 @@ inline std::string describe_average(const Color& c) {
     return s;
 }
 
+/// The colour a fraction `t` of the way from `a` to `b`, filter and transmit too.
 inline Color mix(const Color& a, const Color& b, double t) {
     return {a.rgb + (b.rgb - a.rgb) * t, a.filter + (b.filter - a.filter) * t,
             a.transmit + (b.transmit - a.transmit) * t};
@@ -311,7 +312,8 @@ inline bool Parser::parse_pattern_item(PatternState& st) {
     return true;
 }
 
-// spiral1 ARMS, spiral2 ARMS: the number of arms, truncated to a whole number as POV-Ray's short.
+// SPIRAL_ARMS: FLOAT after spiral1 or spiral2: the number of arms, truncated to a whole number as
+// POV-Ray's short.
 inline int Parser::parse_spiral_arms(const std::string& pattern) {
     SourceLocation at;
     const double arms = parse_float("the number of arms of `" + pattern + "`", &at);

@@ -22,6 +22,7 @@ enum class Spline : std::uint8_t { linear, quadratic, cubic, bezier };
 /// POV-Ray's EPSILON: points closer than this in x and in z are one point.
 inline constexpr double epsilon = 1e-10;
 
+/// Whether two outline points are one point, as POV-Ray judges it (within epsilon).
 [[nodiscard]] inline bool same_point(glm::dvec2 a, glm::dvec2 b) noexcept {
     return std::abs(a.x - b.x) < epsilon && std::abs(a.y - b.y) < epsilon;
 }
@@ -95,7 +96,7 @@ inline constexpr double epsilon = 1e-10;
 
 }  // namespace prism
 
-// PRISM: prism { [SPLINE_TYPE] [SWEEP_TYPE] FLOAT , FLOAT , INT , UV_VECTOR {, UV_VECTOR} [open] [sturm] MODIFIERS }
+// PRISM: prism { {SPLINE_TYPE | SWEEP_TYPE} FLOAT [,] FLOAT [,] INT [,] {UV_VECTOR [,]} [open] [sturm] MODIFIERS }
 //   SPLINE_TYPE: linear_spline | quadratic_spline | cubic_spline | bezier_spline
 //   SWEEP_TYPE: linear_sweep | conic_sweep
 // The points are <x, z> of the xz plane; the prism spans y from the lower height to the higher.

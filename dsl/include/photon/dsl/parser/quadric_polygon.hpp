@@ -11,7 +11,7 @@
 
 namespace photon::dsl::detail {
 
-// QUADRIC: quadric { VECTOR , VECTOR , VECTOR , FLOAT MODIFIERS }
+// QUADRIC: quadric { VECTOR [,] VECTOR [,] VECTOR [,] FLOAT MODIFIERS }
 inline void Parser::parse_quadric(Object& obj) {
     QuadricShape q;
     SourceLocation at[4];
@@ -33,7 +33,7 @@ inline void Parser::parse_quadric(Object& obj) {
         skip_empty_shape(obj, "quadric", "its coefficients of x, y and z are all 0", at[0]);
 }
 
-// POLYGON: polygon { INT , VECTOR {, VECTOR} MODIFIERS }
+// POLYGON: polygon { INT {[,] VECTOR} MODIFIERS }   (INT points, at least 3)
 // 2D points are in the xy plane (z = 0), as POV-Ray reads them. A loop ends where its first point
 // repeats; POV-Ray closes an open last loop, and so does photon.
 inline void Parser::parse_polygon(Object& obj) {

@@ -17,7 +17,7 @@ namespace quadric {
 inline constexpr double epsilon = 1e-10;
 }  // namespace quadric
 
-/// `open` after a cylinder's or cone's values (before its modifiers, as POV-Ray reads it).
+/// OPEN: [open] after a cylinder's or cone's values (before its modifiers, as POV-Ray reads it).
 inline bool Parser::accept_open() {
     if (!peek().is_identifier("open")) return false;
     next();
@@ -61,7 +61,7 @@ inline bool Parser::degenerate(Object& obj, const std::string& keyword, const Ve
     return true;
 }
 
-// CYLINDER: cylinder { VECTOR , VECTOR , FLOAT [open] MODIFIERS }
+// CYLINDER: cylinder { VECTOR [,] VECTOR [,] FLOAT [open] MODIFIERS }
 inline void Parser::parse_cylinder(Object& obj) {
     CylinderShape c;
     SourceLocation base_at, cap_at, radius_at;
@@ -79,7 +79,7 @@ inline void Parser::parse_cylinder(Object& obj) {
     if (c.radius == 0) skip_empty_shape(obj, "cylinder", "radius 0", radius_at);
 }
 
-// CONE: cone { VECTOR , FLOAT , VECTOR , FLOAT [open] MODIFIERS }
+// CONE: cone { VECTOR [,] FLOAT [,] VECTOR [,] FLOAT [open] MODIFIERS }
 inline void Parser::parse_cone(Object& obj) {
     ConeShape c;
     SourceLocation base_at, cap_at, r0_at, r1_at;
@@ -101,7 +101,7 @@ inline void Parser::parse_cone(Object& obj) {
     if (c.base_radius == 0 && c.cap_radius == 0) skip_empty_shape(obj, "cone", "both radii 0", r0_at);
 }
 
-// DISC: disc { VECTOR , VECTOR , FLOAT [[,] FLOAT] MODIFIERS }
+// DISC: disc { VECTOR [,] VECTOR [,] FLOAT [,] [FLOAT] MODIFIERS }
 inline void Parser::parse_disc(Object& obj) {
     DiscShape d;
     SourceLocation normal_at, radius_at, hole_at;
@@ -127,7 +127,7 @@ inline void Parser::parse_disc(Object& obj) {
                          hole_at);
 }
 
-// TORUS: torus { FLOAT , FLOAT [sturm] MODIFIERS }
+// TORUS: torus { FLOAT [,] FLOAT [sturm] MODIFIERS }
 // A major radius of 0 is a sphere of the minor radius (the points at that distance from the
 // centre), which is what POV-Ray's quartic draws there too.
 inline void Parser::parse_torus(Object& obj) {

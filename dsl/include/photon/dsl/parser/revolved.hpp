@@ -58,7 +58,7 @@ inline void Parser::parse_superellipsoid(Object& obj) {
     obj.shape = SuperellipsoidShape{v.x, v.y};
 }
 
-// LATHE: lathe { [SPLINE_TYPE] INT , UV_VECTOR {, UV_VECTOR} [sturm] MODIFIERS }
+// LATHE: lathe { [SPLINE_TYPE] INT [,] {UV_VECTOR [,]} [sturm] MODIFIERS }
 //   SPLINE_TYPE: linear_spline | quadratic_spline | cubic_spline | bezier_spline
 // The points are <radius, height>; the profile turns around the y axis.
 inline void Parser::parse_lathe(Object& obj) {
@@ -105,7 +105,7 @@ inline void Parser::parse_lathe(Object& obj) {
     obj.shape = LatheShape{std::make_shared<const std::vector<OutlineCurve>>(lathe::profile(spline, points))};
 }
 
-// SOR: sor { INT , UV_VECTOR {, UV_VECTOR} [open] [sturm] MODIFIERS }
+// SOR: sor { INT [,] {UV_VECTOR [,]} [open] [sturm] MODIFIERS }
 // The points are <radius, height>; segment i runs between the heights of points i + 2 and i + 3
 // (counting from 1), the first and last point only give the slope at the ends.
 inline void Parser::parse_sor(Object& obj) {

@@ -37,6 +37,7 @@ inline SkySphere Parser::parse_sky_sphere_block(const Token& kw) {
     return sky;
 }
 
+// SKY_SPHERE_STATEMENT: sky_sphere {..}, the scene's sky, replacing any earlier one.
 inline void Parser::parse_sky_sphere(const Token& kw) { scene_.sky_sphere = parse_sky_sphere_block(kw); }
 
 }  // namespace photon::dsl::detail

@@ -7,6 +7,7 @@
 
 namespace photon::dsl::detail {
 
+// Reads the main file `file` (known as `canonical` for include loops and file access) to its end.
 inline SceneDescription Parser::parse_main(std::shared_ptr<const SourceFile> file, std::filesystem::path canonical) {
     access_ = scene_file_access(options_, canonical);
     scene_.at = {file, 1, 1};
@@ -16,6 +17,9 @@ inline SceneDescription Parser::parse_main(std::shared_ptr<const SourceFile> fil
     return std::move(scene_);
 }
 
+// SCENE: {STATEMENT}   (directives and macro calls may come anywhere: the token stream runs them)
+// STATEMENT: camera {..} | default {..} | global_settings {..} | background { COLOR } | sky_sphere {..}
+//   | fog {..} | media {..} | rainbow {..} | OBJECT   (light_source among the objects)
 inline void Parser::parse_statements() {
     std::size_t primitives = 0;
     for (;;) {

@@ -50,6 +50,7 @@ namespace photon::dsl::detail {
     return s;
 }
 
+// Whether `t` starts a string expression: a string, a string function or a string identifier.
 inline bool Parser::starts_string(const Token& t) const {
     if (t.kind == TokenKind::string) return true;
     if (t.kind != TokenKind::identifier) return false;
@@ -58,6 +59,7 @@ inline bool Parser::starts_string(const Token& t) const {
     return v && std::holds_alternative<std::string>(v->data);
 }
 
+// A string made while reading, within the bounds on strings and on the scene's data.
 inline std::string Parser::bounded_string(std::string s, const SourceLocation& at) {
     if (s.size() > options_.max_file_bytes)
         fail(at, "string too long: " + std::to_string(s.size()) + " bytes, photon's strings hold at most " +
@@ -66,7 +68,7 @@ inline std::string Parser::bounded_string(std::string s, const SourceLocation& a
     return s;
 }
 
-/// A string expression where POV-Ray takes a file name or a message, kept as a string token
+/// STRING_TOKEN: STRING where POV-Ray takes a file name or a message, kept as a string token
 /// located where the expression starts.
 inline Token Parser::parse_string_token(const std::string& what) {
     const Token& t = peek();
@@ -189,8 +191,8 @@ inline bool Parser::file_exists_here(const std::string& name) const {
     return false;
 }
 
-// FLOAT: strlen ( STRING ) | val ( STRING ) | asc ( STRING ) | strcmp ( STRING , STRING )
-//      | file_exists ( STRING )
+// STRING_MEASURE: strlen ( STRING ) | val ( STRING ) | asc ( STRING ) | strcmp ( STRING , STRING )
+//               | file_exists ( STRING )
 inline Numeric Parser::parse_string_measure(const Token& f) {
     const std::string& w = f.text;
     expect_symbol("(", "after `" + w + "`");

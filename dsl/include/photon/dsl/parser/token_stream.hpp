@@ -8,30 +8,37 @@
 
 namespace photon::dsl::detail {
 
+// Every error is thrown from here, with the chain of macro calls it is inside.
 inline void Parser::fail(const SourceLocation& at, std::string message) const {
     throw Error(at, std::move(message) + macro_trace());
 }
 
+// The usual error: what was expected, what was found, and a hint (a suggestion) if any.
 inline void Parser::fail_expected(const std::string& expected, const Token& found, const std::string& hint) const {
     fail(found.location, "expected " + expected + ", found " + describe(found) + hint);
 }
 
+// A warning, once for each place and message (a loop must not repeat it), to ParseOptions::diagnostics.
 inline void Parser::warn(const SourceLocation& at, const std::string& message, Severity severity) {
     if (!warned_.insert(at.str() + '\x1f' + message).second) return;
     if (options_.diagnostics) options_.diagnostics({severity, at, message, {}, {}});
 }
 
+// The message for a file over ParseOptions::max_file_bytes.
 inline std::string Parser::too_large_message(std::size_t bytes) const {
     return "file too large: " + std::to_string(bytes) + " bytes, photon reads scene files of at most " +
            std::to_string(options_.max_file_bytes) + " bytes";
 }
 
+// The path an included file is known by, for include loops; absolute when it cannot be made canonical.
 inline std::filesystem::path Parser::weakly_canonical(const std::filesystem::path& p) {
     std::error_code ec;
     auto c = std::filesystem::weakly_canonical(p, ec);
     return ec ? std::filesystem::absolute(p) : c;
 }
 
+// A scene file read whole, within the size bounds; `from` is the #include naming it (unknown for the
+// main file).
 inline std::shared_ptr<const SourceFile> Parser::load(const std::filesystem::path& path, std::string name,
                                                       const SourceLocation& from) {
     std::error_code ec;
@@ -50,6 +57,8 @@ inline std::shared_ptr<const SourceFile> Parser::load(const std::filesystem::pat
     return std::make_shared<SourceFile>(SourceFile{std::move(name), std::move(text)});
 }
 
+// INCLUDE: #include STRING   (a file the scene wrote, else one read through ParseOptions::read_include,
+// else one found beside the including file or in the include paths)
 inline void Parser::directive_include(const Token& d) {
     const Token s = parse_string_token("a file name in double quotes after `#include`");
     if (files_.size() >= options_.max_include_depth)
@@ -119,6 +128,7 @@ inline void Parser::charge_bytes(std::uint64_t bytes, const SourceLocation& at) 
                      " bytes of file text, strings, arrays and written files made while it is read");
 }
 
+// Fails when `canonical` is a file already being read (not a macro body): an include loop.
 inline void Parser::check_include_loop(const std::filesystem::path& canonical, const Token& s) const {
     for (std::size_t i = 0; i < files_.size(); ++i)
         if (!files_[i].macro && files_[i].path == canonical) {
@@ -128,6 +138,8 @@ inline void Parser::check_include_loop(const std::filesystem::path& canonical, c
         }
 }
 
+// The next token of the innermost frame, leaving macro bodies and included files at their end,
+// within max_tokens and max_parse_seconds. Directives and macro calls are run by peek, not here.
 inline Token Parser::raw_token() {
     for (;;) {
         if (++tokens_ > options_.max_tokens) {
@@ -161,10 +173,12 @@ inline Token Parser::raw_token() {
     }
 }
 
+// line:column, for a message about the same file.
 inline std::string Parser::position(const SourceLocation& at) {
     return std::to_string(at.line) + ":" + std::to_string(at.column);
 }
 
+// `at` as line:column when it is in the file of `from`, else with its file name.
 inline std::string Parser::position_in(const SourceLocation& at, const SourceLocation& from) const {
     if (at.file == from.file) return position(at);
     return at.str();
@@ -174,6 +188,8 @@ inline std::string Parser::position_in(const SourceLocation& at, const SourceLoc
 /// body of a macro called there.
 inline bool Parser::suppressed() const { return !suppress_.empty() && suppress_.back() == files_.size(); }
 
+// The next token, once the directives (unless suppressed) and macro calls before it have run; an
+// array element `A[i]` comes as one identifier token.
 inline const Token& Parser::peek() {
     for (;;) {
         if (lookahead_) {
@@ -192,6 +208,7 @@ inline const Token& Parser::peek() {
     }
 }
 
+// The next token, taken (see peek).
 inline Token Parser::next() {
     peek();
     Token t = std::move(*lookahead_);
@@ -199,26 +216,29 @@ inline Token Parser::next() {
     return t;
 }
 
+// OPTIONAL_SYMBOL: [s]; whether it was there.
 inline bool Parser::accept_symbol(std::string_view s) {
     if (!peek().is_symbol(s)) return false;
     next();
     return true;
 }
 
+// SYMBOL: s, else the error "expected `s` CONTEXT".
 inline Token Parser::expect_symbol(std::string_view s, const std::string& context) {
     if (!peek().is_symbol(s)) fail_expected("`" + std::string(s) + "` " + context, peek());
     return next();
 }
 
+// OPTIONAL_COMMA: [,]
 inline void Parser::optional_comma() { accept_symbol(","); }
 
-/// `{` after a block keyword.
+/// OPEN_BLOCK: { after a block keyword.
 inline void Parser::open_block(const Token& keyword) {
     if (!peek().is_symbol("{")) fail_expected("`{` after `" + keyword.text + "`", peek());
     next();
 }
 
-/// `}` closing the block of `keyword`; `items` names what else could come.
+/// CLOSE_BLOCK: } closing the block of `keyword`; `items` names what else could come.
 inline void Parser::close_block(const Token& keyword, const std::string& items, Words known) {
     const Token& t = peek();
     if (t.is_symbol("}")) {
@@ -233,7 +253,7 @@ inline void Parser::close_block(const Token& keyword, const std::string& items, 
     fail_expected(items + " or " + close, t, hint);
 }
 
-/// Skips a `{ ... }` block after `kw`, nested blocks included.
+/// SKIPPED_BLOCK: { balanced tokens } after `kw`, nested blocks included.
 inline void Parser::skip_block(const Token& kw) {
     open_block(kw);
     int depth = 1;

@@ -6,6 +6,8 @@
 
 namespace photon::dsl::detail {
 
+// TRANSFORMATION: translate V | rotate V | scale V | matrix < F , F , F , F , F , F , F , F , F , F , F , F >
+//   | transform { TRANSFORM_BODY } | transform TRANSFORM_IDENT   (a scale by 0 or a singular matrix is an error)
 inline bool Parser::try_transform(Transform& tr) {
     const Token t = peek();
     if (t.kind != TokenKind::identifier) return false;
@@ -56,11 +58,13 @@ inline bool Parser::try_transform(Transform& tr) {
     return true;
 }
 
+// TRANSFORM_BLOCK: transform { TRANSFORM_BODY }, a declared value (the `{` is required).
 inline Transform Parser::parse_transform_block(const Token& kw) {
     if (!peek().is_symbol("{")) fail_expected("`{` after `transform`", peek());
     return parse_transform_body(kw);
 }
 
+// TRANSFORM_BODY: [TRANSFORM_IDENT] {TRANSFORMATION | inverse}, with its braces.
 inline Transform Parser::parse_transform_body(const Token& kw) {
     const Nest nest(*this, kw.location);
     open_block(kw);

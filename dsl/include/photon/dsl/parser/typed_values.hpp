@@ -7,11 +7,14 @@
 
 namespace photon::dsl::detail {
 
+// A value that must be a float: a vector or colour is an error naming `what`.
 inline double Parser::to_float(const Numeric& n, const std::string& what, const SourceLocation& at) const {
     if (!n.is_float()) fail(at, "expected " + what + " (a number), found " + describe(n));
     return n.c[0];
 }
 
+// A value that must be a vector: a float f is <f, f, f> (POV-Ray's promotion), a 2-vector has z 0,
+// a 4- or 5-vector is an error naming `what`.
 inline Vector3 Parser::to_vector(const Numeric& n, const std::string& what, const SourceLocation& at) const {
     if (n.dim == 0) return Vector3(n.c[0]);
     if (n.dim == 2 || n.dim == 3) return {n.c[0], n.c[1], n.c[2]};
@@ -24,6 +27,7 @@ inline Color Parser::to_color(const Numeric& n) {
     return {{n.at(0), n.at(1), n.at(2)}, n.at(3), n.at(4)};
 }
 
+/// PARAMETER: FLOAT | VECTOR, an EXPRESSION whose comparisons need parentheses.
 /// A float or vector parameter of a block: POV-Ray reads it at the level of sums (Parse_Float and
 /// Parse_Vector call Parse_Rel_Factor), so comparisons need parentheses there and
 /// `box { <0,0,0><1,1,1> }` is two corners, not `<0,0,0> < <1,1,1>`.
@@ -35,19 +39,21 @@ inline Numeric Parser::parse_parameter_for(const std::string& what) {
     return n;
 }
 
+// FLOAT: a PARAMETER that is a float; `where` receives where it starts.
 inline double Parser::parse_float(const std::string& what, SourceLocation* where) {
     const SourceLocation at = peek().location;
     if (where) *where = at;
     return to_float(parse_parameter_for(what), what, at);
 }
 
+// VECTOR: a PARAMETER that is a float (promoted to <f, f, f>) or a 2- or 3-vector.
 inline Vector3 Parser::parse_vector(const std::string& what, SourceLocation* where) {
     const SourceLocation at = peek().location;
     if (where) *where = at;
     return to_vector(parse_parameter_for(what), what, at);
 }
 
-/// A whole number in [lo, hi] (fractions are truncated, as POV-Ray does).
+/// INT: FLOAT, a whole number in [lo, hi] (fractions are truncated, as POV-Ray does).
 inline std::int64_t Parser::parse_integer(const std::string& what, double lo, double hi) {
     SourceLocation at;
     const double v = parse_float(what, &at);
@@ -60,6 +66,7 @@ inline std::int64_t Parser::parse_integer(const std::string& what, double lo, do
     return std::int64_t(v);
 }
 
+// NONNEGATIVE: FLOAT >= 0
 inline double Parser::parse_nonnegative(const std::string& what) {
     SourceLocation at;
     const double v = parse_float(what, &at);
@@ -67,6 +74,8 @@ inline double Parser::parse_nonnegative(const std::string& what) {
     return v;
 }
 
+// Whether `t` can start an expression: a number, ( < - + !, a word of the expressions, or an
+// identifier of a float, vector, colour, spline or function.
 inline bool Parser::starts_expression(const Token& t) const {
     if (t.kind == TokenKind::number) return true;
     if (t.kind == TokenKind::symbol) return one_of(t.text, {"(", "<", "-", "+", "!"});
@@ -77,7 +86,7 @@ inline bool Parser::starts_expression(const Token& t) const {
                  std::holds_alternative<std::shared_ptr<const UserFunction>>(v->data));
 }
 
-/// `on`, `off`, any number, or nothing (meaning on).
+/// BOOL: [FLOAT]: `on`, `off`, any number, or nothing (meaning on).
 inline bool Parser::parse_optional_bool() {
     if (!starts_expression(peek())) return true;
     return parse_float("`on` or `off`") != 0.0;

@@ -71,6 +71,8 @@ inline std::shared_ptr<const UserFunction> Parser::parse_user_function(const Tok
     return f;
 }
 
+// Adds node `n` to the body, within max_function_body_height, so that evaluating it cannot overflow
+// the stack.
 inline std::uint32_t Parser::fn_node(FunctionScope& s, FunctionNode n) {
     std::uint32_t height = 1;
     for (const std::uint32_t c : n.children) height = std::max(height, s.heights[c] + 1);
@@ -82,6 +84,7 @@ inline std::uint32_t Parser::fn_node(FunctionScope& s, FunctionNode n) {
     return std::uint32_t(s.f.nodes.size() - 1);
 }
 
+// A node of two operands, `a` and `b`, at the operator `op`.
 inline std::uint32_t Parser::fn_binary(FunctionScope& s, FunctionNode::Kind kind, const Token& op,
                                        std::uint32_t a, std::uint32_t b) {
     FunctionNode n;
@@ -107,7 +110,7 @@ inline std::uint32_t Parser::fn_expression(FunctionScope& s) {
     return fn_node(s, std::move(n));
 }
 
-// FN_OR: FN_AND { | FN_AND }    FN_AND: FN_RELATION { & FN_RELATION }
+// FN_OR: FN_AND { | FN_AND }
 inline std::uint32_t Parser::fn_or(FunctionScope& s) {
     std::uint32_t a = fn_and(s);
     while (peek().is_symbol("|")) {
@@ -117,6 +120,7 @@ inline std::uint32_t Parser::fn_or(FunctionScope& s) {
     return a;
 }
 
+// FN_AND: FN_RELATION { & FN_RELATION }
 inline std::uint32_t Parser::fn_and(FunctionScope& s) {
     std::uint32_t a = fn_relation(s);
     while (peek().is_symbol("&")) {
@@ -146,7 +150,7 @@ inline std::uint32_t Parser::fn_relation(FunctionScope& s) {
     }
 }
 
-// FN_SUM: FN_PRODUCT { (+ | -) FN_PRODUCT }    FN_PRODUCT: FN_UNARY { (* | /) FN_UNARY }
+// FN_SUM: FN_PRODUCT { (+ | -) FN_PRODUCT }
 inline std::uint32_t Parser::fn_sum(FunctionScope& s) {
     std::uint32_t a = fn_product(s);
     while (peek().is_symbol("+") || peek().is_symbol("-")) {
@@ -156,6 +160,7 @@ inline std::uint32_t Parser::fn_sum(FunctionScope& s) {
     return a;
 }
 
+// FN_PRODUCT: FN_UNARY { (* | /) FN_UNARY }
 inline std::uint32_t Parser::fn_product(FunctionScope& s) {
     std::uint32_t a = fn_unary(s);
     while (peek().is_symbol("*") || peek().is_symbol("/")) {
@@ -180,7 +185,7 @@ inline std::uint32_t Parser::fn_unary(FunctionScope& s) {
     return fn_node(s, std::move(n));
 }
 
-/// `( FN_EXPRESSION {, FN_EXPRESSION} )` after a function's name.
+/// FN_ARGUMENTS: ( [FN_EXPRESSION {, FN_EXPRESSION}] ) after a function's name.
 inline std::vector<std::uint32_t> Parser::fn_arguments(FunctionScope& s, const Token& f) {
     expect_symbol("(", "after `" + f.text + "`");
     std::vector<std::uint32_t> args;
@@ -292,6 +297,7 @@ inline std::uint32_t Parser::fn_primary(FunctionScope& s) {
                          join_names(s.f.parameters) + ")");
 }
 
+// The parameters' names for a message: "x, y, z", or "none".
 inline std::string Parser::join_names(const std::vector<std::string>& names) {
     std::string r;
     for (const auto& n : names) r += (r.empty() ? "" : ", ") + n;
@@ -310,8 +316,9 @@ inline int Parser::component_index(const std::string& m, int dim) {
     return it->second < dim ? it->second : -1;
 }
 
-/// `.member` after a call of a pigment or transform function inside a body (POV-Ray requires it:
-/// a body's values are numbers).
+/// FN_COMPONENT: . COMPONENT after a call of a pigment or transform function inside a body
+/// (POV-Ray requires it: a body's values are numbers); COMPONENT one of x y z u v red green blue,
+/// and t filter transmit of a pigment's colour.
 inline std::uint32_t Parser::fn_component(const Token& call, const UserFunction& f) {
     if (!peek().is_symbol("."))
         fail_expected("`.` and a component after `" + call.text + "(...)`: `" + f.name +
@@ -324,6 +331,7 @@ inline std::uint32_t Parser::fn_component(const Token& call, const UserFunction&
     return std::uint32_t(k);
 }
 
+// Fails unless the call of `f` at `call` has as many arguments as `f` has parameters.
 inline void Parser::check_arity(const UserFunction& f, std::size_t n, const Token& call) const {
     if (f.kind == UserFunction::Kind::internal) return;  // its extra parameters are its own
     const std::size_t want = f.parameters.size();
@@ -333,7 +341,7 @@ inline void Parser::check_arity(const UserFunction& f, std::size_t n, const Toke
                                 std::to_string(n));
 }
 
-// CALL: FUNCTION_IDENTIFIER ( FLOAT {, FLOAT} ), in an expression: evaluated now.
+// CALL: FUNCTION_IDENTIFIER ( [FLOAT {, FLOAT}] ), in an expression: evaluated now.
 inline Numeric Parser::call_function_value(const Token& t, const UserFunction& f) {
     expect_symbol("(", "after the function `" + t.text + "`");
     const bool saved = in_vector_;
