@@ -1,5 +1,5 @@
-# The optional compiled units that keep header-only use quick to build (see README, "Using the
-# library", and bench/README.md). EXCLUDE_FROM_ALL: built only for the programs that link them.
+# The optional compiled units that keep header-only use quick to build (see docs/library.md,
+# "Linking", and bench/README.md). EXCLUDE_FROM_ALL: built only for the programs that link them.
 #
 # photon_add_compiled_render(NAME [DEFINITIONS def...]): a static library instantiating render()
 #   and its passes for DefaultScene<float> and <double> (src/render_instantiations.cpp), and the

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the paper's four scenes with ray tracing (rt) and photon mapping (pm) at 800x600 and
-# writes the side-by-side pictures the README shows to docs/images/ (JPEG, to keep the repository
+# writes the side-by-side pictures of docs/gallery.md to docs/images/ (JPEG, to keep the repository
 # light), plus each render's statistics to docs/images/<scene>-<mode>.txt.
 # Usage: scripts/render-gallery.sh [build-dir]
 set -euo pipefail
