@@ -63,8 +63,12 @@ def main():
     ap.add_argument("--no-povray", action="store_true", help="render with photon only")
     ap.add_argument("--only", action="append", default=[], help="render only scenes matching this glob (repeatable)")
     ap.add_argument("--report-only", action="store_true", help="rewrite the report from the last run's results")
+    ap.add_argument("--resume", action="store_true",
+                    help="keep the renders of the last run (saved after every scene) and render only the rest")
     ap.add_argument("--judge", action="store_true",
                     help="also the radiosity scenes against photon's sppm judge, and POV-Ray at +Q8 against photon rt")
+    ap.add_argument("--judge-seconds", type=float, default=120,
+                    help="time of each of the two sppm judge renders per radiosity scene")
     ap.add_argument("--work", default="/tmp/photon-pov-corpus")
     ap.add_argument("--cache", default=os.path.join(os.environ.get("XDG_CACHE_HOME", os.path.expanduser("~/.cache")),
                                                     "photon", "pov-corpus"))
@@ -92,6 +96,10 @@ def main():
            "width": a.width, "height": a.height, "threads": a.threads, "rendered": not a.no_render,
            "povray": None, "photon_seconds": a.photon_seconds, "povray_seconds": a.povray_seconds,
            "scenes": {}}
+    previous = {}
+    if a.resume and os.path.exists(results_file):
+        with open(results_file) as f:
+            previous = json.load(f)["scenes"]
     with concurrent.futures.ThreadPoolExecutor(a.jobs) as pool:
         for s, r in zip(all_scenes, pool.map(lambda s: photon_runs.check(photon, s), all_scenes)):
             run["scenes"][rel(s)] = {"check": r}
@@ -104,6 +112,9 @@ def main():
         cache = povray.cache_folder(a.cache, a.width, a.height)
         for i, s in enumerate(chosen):
             entry = run["scenes"][rel(s)]
+            if "photon" in previous.get(rel(s), {}) or "povray" in previous.get(rel(s), {}):
+                run["scenes"][rel(s)] = previous[rel(s)]
+                continue
             if version:
                 entry["povray"] = povray.render(s, rel(s), cache, a.width, a.height, a.povray_seconds, a.threads)
             if entry["check"]["code"] == 0:
@@ -116,14 +127,20 @@ def main():
                 entry["difference"] = compare.difference(entry["povray"]["image"], entry["photon"]["image"])
             print("pov-corpus: [%d/%d] %s %s" % (i + 1, len(chosen), rel(s), report.row_summary(entry)),
                   file=sys.stderr, flush=True)
+            save(results_file, run)  # a stopped run resumes from here (--resume)
         if a.judge and version:
             from pov_corpus import judge
             judge.radiosity_rows(a, photon, examples, run, rel)
-    os.makedirs(a.work, exist_ok=True)
-    with open(results_file, "w") as f:
-        json.dump(run, f, indent=1)
+    save(results_file, run)
     report.write(a, run)
     write_subset(a.subset, examples, run)
+
+
+def save(path, run):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path + ".new", "w") as f:
+        json.dump(run, f, indent=1)
+    os.replace(path + ".new", path)
 
 
 def write_subset(path, examples, run):

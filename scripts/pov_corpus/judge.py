@@ -5,8 +5,8 @@ programs is right, and whether photon reads the file as POV-Ray does without it.
 - photon `rt` against POV-Ray at +Q8 (radiosity, photons and media off in POV-Ray): the language
   alone, by the corpus measure (compare.py).
 - photon `pm` (the corpus render) and POV-Ray with radiosity, each against photon's `sppm`, the
-  consistent judge that sees every path: two sppm runs of SECONDS each with seeds 1 and 2, their
-  mean the judge, half the RMS of their difference its noise floor. The error is the relative RMS
+  consistent judge that sees every path: two sppm runs of --judge-seconds each with seeds 1 and 2,
+  their mean the judge, half the RMS of their difference its noise floor. The error is the relative RMS
   difference of linear 8x8 block means (the 8-bit files decoded by the sRGB curve), over the mean."""
 import os
 
@@ -14,7 +14,6 @@ import numpy as np
 
 from . import compare, photon_runs, povray
 
-SPPM_SECONDS = 120
 
 
 def linear_blocks(path):
@@ -35,6 +34,8 @@ def radiosity_rows(a, photon, examples, run, rel):
             continue
         if a.only and not entry.get("photon"):
             continue
+        if a.resume and "floor" in entry.get("judge", {}):
+            continue
         scene = os.path.join(examples, name)
         j = entry["judge"] = {}
         pov_q8 = povray.render(scene, name, q8_cache, a.width, a.height, a.povray_seconds, a.threads, radiosity_off=True)
@@ -45,8 +46,8 @@ def radiosity_rows(a, photon, examples, run, rel):
         judges = []
         for seed in (1, 2):
             image = os.path.join(a.work, "photon-sppm", "%s-%d.png" % (name[:-4], seed))
-            r = photon_runs.render(photon, scene, image, a.width, a.height, SPPM_SECONDS + 120, a.threads,
-                                   ["--mode", "sppm", "--time", str(SPPM_SECONDS), "--seed", str(seed)])
+            r = photon_runs.render(photon, scene, image, a.width, a.height, a.judge_seconds + 120, a.threads,
+                                   ["--mode", "sppm", "--time", str(a.judge_seconds), "--seed", str(seed)])
             if r["image"]:
                 judges.append(linear_blocks(r["image"]))
         if len(judges) < 2:
@@ -54,7 +55,7 @@ def radiosity_rows(a, photon, examples, run, rel):
         judge = (judges[0] + judges[1]) / 2
         mean = float(judge.mean())
         j["floor"] = relative_rms(judges[0], judges[1], mean) / 2
-        j["sppm_seconds"] = SPPM_SECONDS
+        j["sppm_seconds"] = a.judge_seconds
         if entry.get("photon", {}).get("image"):
             j["photon_error"] = relative_rms(linear_blocks(entry["photon"]["image"]), judge, mean)
         if entry.get("povray", {}).get("image"):
