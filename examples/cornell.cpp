@@ -14,7 +14,7 @@
 #include <photon/film/image_io.hpp>
 
 int main(int argc, char** argv) try {
-    photon::RenderSettings settings;  // 800 x 600, ray depth 4, photon depth 10
+    photon::RenderSettings settings;  // the library's defaults: 800 x 600, ray depth 4, photon depth 100
     std::string out_dir = ".";
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];

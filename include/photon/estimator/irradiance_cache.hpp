@@ -99,15 +99,17 @@ public:
     [[nodiscard]] std::size_t memory_bytes() const noexcept { return tree_.memory_bytes(); }
 
     /// Interpolated irradiance at x with unit normal n, or nothing if no record is valid there.
-    /// `buffer` is per-thread scratch.
+    /// `relax` > 1 widens every record's domain and reach by that factor (an error bound of
+    /// relax * a). `buffer` is per-thread scratch.
     [[nodiscard]] std::optional<Rgb<float>> interpolate(const Vec3<float>& x, const Vec3<float>& n,
-                                                        std::vector<Neighbor<float>>& buffer) const {
+                                                        std::vector<Neighbor<float>>& buffer, float relax = 1.0f) const {
         if (tree_.empty()) return std::nullopt;
-        const auto found = tree_.within_radius(x, max_reach_, buffer);
+        const auto found = tree_.within_radius(x, max_reach_ * relax, buffer);
         Rgb<float> sum(0.0f);
         float weights = 0.0f;
         bool valid = false;
-        const float domain = 1.0f / error_, reach = 1.0f / (cache_blend_reach * error_);
+        const float a = error_ * relax;
+        const float domain = 1.0f / a, reach = 1.0f / (cache_blend_reach * a);
         for (const Neighbor<float>& c : found) {
             const IrradianceRecord& r = tree_.payload(c.index);
             const float w = ward_weight(r, x, n, c.distance2);

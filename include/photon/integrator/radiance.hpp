@@ -155,12 +155,17 @@ private:
     }
 
     /// Indirect irradiance at x by final gathering (through the irradiance cache when there is one
-    /// and it covers x), for shading normal n over geometric normal geometric_n.
+    /// and it covers x), for shading normal n over geometric normal geometric_n. The pretrace
+    /// covered every pixel's centre; a point of an anti-aliasing sample between records takes
+    /// them with twice the error bound before it gathers in full (each full gather costs as much
+    /// as a record).
     [[nodiscard]] Rgb<S> final_gather(const Vec3<S>& x, const Vec3<S>& n, const Vec3<S>& geometric_n,
                                       ShadingContext& ctx) const {
-        if (maps_.irradiance_cache)
-            if (const auto e = maps_.irradiance_cache->interpolate(Vec3<float>(x), Vec3<float>(n), ctx.nearest))
-                return Rgb<S>(*e);
+        if (maps_.irradiance_cache) {
+            const Vec3<float> xf(x), nf(n);
+            if (const auto e = maps_.irradiance_cache->interpolate(xf, nf, ctx.nearest)) return Rgb<S>(*e);
+            if (const auto e = maps_.irradiance_cache->interpolate(xf, nf, ctx.nearest, 2.0f)) return Rgb<S>(*e);
+        }
         return gather(x, n, settings_.final_gather_rays, ctx, geometric_n).irradiance;
     }
 

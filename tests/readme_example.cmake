@@ -1,0 +1,16 @@
+# cmake -DREADME=... -DEXAMPLE=... -P readme_example.cmake: the README's C++ block is
+# examples/readme.cpp (less its two opening comment lines), which the examples build compiles.
+file(READ "${README}" readme)
+file(READ "${EXAMPLE}" example)
+string(FIND "${readme}" "```cpp\n" start)
+if(start EQUAL -1)
+  message(FATAL_ERROR "${README}: no ```cpp block")
+endif()
+math(EXPR start "${start} + 7")
+string(SUBSTRING "${readme}" ${start} -1 rest)
+string(FIND "${rest}" "```" stop)
+string(SUBSTRING "${rest}" 0 ${stop} block)
+string(REGEX REPLACE "^// [^\n]*\n// [^\n]*\n" "" body "${example}")
+if(NOT block STREQUAL body)
+  message(FATAL_ERROR "${README}'s C++ example differs from ${EXAMPLE}: change both together")
+endif()
