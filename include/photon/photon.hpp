@@ -38,6 +38,7 @@
 #include "material/fresnel.hpp"
 #include "material/highlight.hpp"
 #include "material/material.hpp"
+#include "material/medium.hpp"
 #include "material/scatter.hpp"
 
 #include "texture/bump_map.hpp"
@@ -61,7 +62,6 @@
 #include "scene/camera.hpp"
 #include "scene/fog.hpp"
 #include "scene/media_segment.hpp"
-#include "scene/medium.hpp"
 #include "scene/scene.hpp"
 
 #include "photonmap/kdtree.hpp"
@@ -77,9 +77,11 @@
 #include "estimator/filters.hpp"
 #include "estimator/visible_disc.hpp"
 
+#include "settings/effect_switches.hpp"
+#include "settings/render_settings.hpp"
+
 #include "integrator/boundary_probe.hpp"
 #include "integrator/direct_lighting.hpp"
-#include "integrator/effect_switches.hpp"
 #include "integrator/environment_lighting.hpp"
 #include "integrator/fog_seen.hpp"
 #include "integrator/media_march.hpp"
@@ -87,7 +89,6 @@
 #include "integrator/radiance.hpp"
 #include "integrator/reference_render.hpp"
 #include "integrator/render.hpp"
-#include "integrator/render_settings.hpp"
 #include "integrator/render_stats.hpp"
 #include "integrator/shading_context.hpp"
 #include "plan/effects_plan.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// `media` in an interior and at scene level build the library's Medium (scene/medium.hpp) as
+// `media` in an interior and at scene level build the library's Medium (material/medium.hpp) as
 // POV-Ray 3.7 reads them: coefficients (scattering scaled for photon's pi-scaled lights and its
 // phase functions over 4 pi), densities moved with their media and object, declared media and
 // densities, density_map entries that are densities, the lights' media flags; and export-pov

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Participating media (scene/medium.hpp, integrator/media_march.hpp, media_seen.hpp) against
+// Participating media (material/medium.hpp, integrator/media_march.hpp, media_seen.hpp) against
 // closed forms and a quadrature written here, one camera ray at a time in every mode (rt/pm's
 // radiance, the path tracer, sppm's camera path), and whole images: the same for any thread
 // count, and finite.

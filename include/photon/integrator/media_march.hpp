@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Ray marching through participating media (scene/medium.hpp), as POV-Ray 3.7 integrates them
+// Ray marching through participating media (material/medium.hpp), as POV-Ray 3.7 integrates them
 // (MediaFunction::ComputeMedia): the segment is cut into intervals, more of them where lights
 // reach it (a spotlight's cone), and each interval into `samples` equal steps, each sampled once
 // (at its centre, moved by the jitter); within a step the medium is taken as constant, so what
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "../math/rng.hpp"
-#include "../scene/medium.hpp"
+#include "../material/medium.hpp"
 
 namespace photon {
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// What participating media (scene/medium.hpp, on the segments scene/media_segment.hpp picks) do
+// What participating media (material/medium.hpp, on the segments scene/media_segment.hpp picks) do
 // in each pass.
 //
 // Camera, mirror and glass rays (the paths until their first diffuse vertex) see everything:

@@ -17,7 +17,7 @@
 
 #include "../film/film.hpp"
 #include "../photonmap/photon.hpp"
-#include "render_settings.hpp"
+#include "../settings/render_settings.hpp"
 
 namespace photon {
 

@@ -28,7 +28,7 @@
 #include "environment_lighting.hpp"
 #include "fog_seen.hpp"
 #include "media_seen.hpp"
-#include "render_settings.hpp"
+#include "../settings/render_settings.hpp"
 
 namespace photon {
 

@@ -8,7 +8,7 @@
 #include "../estimator/estimate_radius.hpp"
 #include "../estimator/irradiance_cache.hpp"
 #include "../estimator/precomputed_irradiance.hpp"
-#include "render_settings.hpp"
+#include "../settings/render_settings.hpp"
 
 namespace photon {
 

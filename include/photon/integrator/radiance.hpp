@@ -24,7 +24,7 @@
 #include "fog_seen.hpp"
 #include "media_seen.hpp"
 #include "photon_maps.hpp"
-#include "render_settings.hpp"
+#include "../settings/render_settings.hpp"
 
 namespace photon {
 

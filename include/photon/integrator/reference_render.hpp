@@ -25,7 +25,7 @@
 #include "../parallel/work_share.hpp"
 #include "../scene/camera.hpp"
 #include "path_tracer.hpp"
-#include "render_settings.hpp"
+#include "../settings/render_settings.hpp"
 #include "render_stats.hpp"
 #include "shading_context.hpp"
 

@@ -20,7 +20,7 @@
 #include "direct_lighting.hpp"
 #include "fog_seen.hpp"
 #include "media_seen.hpp"
-#include "render_settings.hpp"
+#include "../settings/render_settings.hpp"
 
 namespace photon {
 

@@ -79,7 +79,7 @@ template <Scalar S> [[nodiscard]] const Falloff<S>& light_falloff(const Light<S>
 template <Scalar S> [[nodiscard]] bool light_casts_shadows(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) { return l.casts_shadows; }, light);
 }
-/// Whether participating media scatter the light (scene/medium.hpp).
+/// Whether participating media scatter the light (material/medium.hpp).
 template <Scalar S> [[nodiscard]] bool light_media_interaction(const Light<S>& light) noexcept {
     return std::visit([](const auto& l) { return l.media_interaction; }, light);
 }

@@ -19,7 +19,7 @@
 #include "../math/vec.hpp"
 #include "../texture/normal_field.hpp"
 #include "../texture/reflectance_field.hpp"
-#include "../scene/medium.hpp"
+#include "medium.hpp"
 #include "absorption.hpp"
 #include "fresnel.hpp"
 
@@ -67,7 +67,7 @@ template <Scalar S> struct MaterialParams {
     /// its reflectances are scaled to a sum <= 1 for light transport, which must converge, and
     /// this gain gives the camera the surface as written. Not physical, so 1 by default.
     S seen_gain = S(1);
-    /// Participating media inside the surface (POV-Ray's interior `media`, scene/medium.hpp):
+    /// Participating media inside the surface (POV-Ray's interior `media`, medium.hpp):
     /// what fills the object, seen along the segments rays run inside it. Empty: none.
     std::vector<Medium<S>> media{};
 };

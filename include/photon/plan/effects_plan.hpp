@@ -24,7 +24,7 @@
 #include <variant>
 #include <vector>
 
-#include "../integrator/render_settings.hpp"
+#include "../settings/render_settings.hpp"
 #include "../scene/camera.hpp"
 #include "../tracing/caustic_targets.hpp"
 #include "../tracing/light_allocation.hpp"

@@ -13,7 +13,7 @@
 #include <type_traits>
 
 #include "../material/scatter.hpp"
-#include "medium.hpp"
+#include "../material/medium.hpp"
 
 namespace photon {
 

@@ -39,7 +39,7 @@
 #include "../geometry/triangle_mesh.hpp"
 #include "../light/environment.hpp"
 #include "fog.hpp"
-#include "medium.hpp"
+#include "../material/medium.hpp"
 #include "../light/light.hpp"
 #include "../material/material.hpp"
 
@@ -150,7 +150,7 @@ public:
     }
     [[nodiscard]] std::span<const Fog<S>> fogs() const noexcept { return fogs_; }
 
-    /// Adds a medium (medium.hpp) that fills the space outside objects (POV-Ray's atmospheric
+    /// Adds a medium (material/medium.hpp) that fills the space outside objects (POV-Ray's atmospheric
     /// media); throws std::invalid_argument if it is invalid.
     void add_medium(const Medium<S>& medium) {
         medium.validate();

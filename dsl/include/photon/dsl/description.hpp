@@ -216,7 +216,7 @@ struct Finish {
     SourceLocation at;
 };
 
-/// `media { ... }`: POV-Ray's participating media, made the library's Medium (scene/medium.hpp)
+/// `media { ... }`: POV-Ray's participating media, made the library's Medium (material/medium.hpp)
 /// by build/media.hpp. Values as written; POV-Ray's defaults for method 3.
 struct MediaDescription {
     Vector3 absorption{0.0}, emission{0.0}, scattering{0.0};

@@ -33,7 +33,7 @@
 #include <variant>
 #include <vector>
 
-#include <photon/integrator/render_settings.hpp>
+#include <photon/settings/render_settings.hpp>
 
 #include "description.hpp"
 #include "value.hpp"

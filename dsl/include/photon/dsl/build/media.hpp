@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// POV-Ray's media as the library's (scene/medium.hpp), computing what POV-Ray 3.7 computes.
+// POV-Ray's media as the library's (material/medium.hpp), computing what POV-Ray 3.7 computes.
 // Absorption and emission carry over as written. POV-Ray scatters k * scattering * C towards
 // the eye, k its phase function (1 when isotropic), C the light's colour at the point; photon's
 // lights give irradiance E = pi C (build/lights.hpp) and its phase functions are POV-Ray's over
@@ -15,7 +15,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include <photon/scene/medium.hpp>
+#include <photon/material/medium.hpp>
 
 #include "../description.hpp"
 #include "../diagnostics.hpp"

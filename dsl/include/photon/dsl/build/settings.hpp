@@ -11,7 +11,7 @@
 #include <string>
 #include <variant>
 
-#include <photon/integrator/render_settings.hpp>
+#include <photon/settings/render_settings.hpp>
 
 #include "../description.hpp"
 #include "../settings_table.hpp"

@@ -147,13 +147,13 @@ struct RenderSettings {
     unsigned pm_error_passes = 0;
     double pm_error_time = 0.5;
 
-    /// Effects forced on or off against the light-path plan (effects_plan.hpp); all automatic:
+    /// Effects forced on or off against the light-path plan (plan/effects_plan.hpp); all automatic:
     /// the plan decides.
     EffectSwitches effects{};
 
     std::uint64_t seed = 1;
     unsigned threads = 0;  ///< 0: all hardware threads; the image does not depend on it
-    /// Bytes the render may plan to use (memory_budget.hpp); 0: the memory available when it starts.
+    /// Bytes the render may plan to use (integrator/memory_budget.hpp); 0: the memory available when it starts.
     std::uint64_t memory_limit = 0;
 
     /// Called from worker threads (serialised) with the phase and the fraction of it done.

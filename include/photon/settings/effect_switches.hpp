@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
-// Forcing the light-path plan (effects_plan.hpp): each effect the plan decides can be left to it
+// Forcing the light-path plan (plan/effects_plan.hpp): each effect the plan decides can be left to it
 // (auto), forced on (the pass runs even where the plan finds nothing for it) or forced off. A
 // scene file's `effects "caustics=off,indirect=on"` and `photon render --effects` both read
 // this text, so they share one spelling and one set of messages.
