@@ -33,8 +33,8 @@ struct SceneClass {
     unsigned reference_samples; ///< path tracer: samples per pixel of each of the judge's two runs
     unsigned sppm_passes;       ///< sppm: passes of each run
     /// Samples per pixel of the judged modes (0: the measurement's). A caustic focused to a few
-    /// millimetres is found by few camera samples: at 16 per pixel pm's caustic block varied by
-    /// -12% to +7% with the seed, at 256 it is within 0.5% of the judge.
+    /// millimetres is found by few camera samples: at 16 per pixel pm's caustic block varied
+    /// with the seed, at 256 it matches the judge (docs/scene-classes.md, 'Results').
     unsigned judged_samples = 0;
 };
 
@@ -108,13 +108,13 @@ struct Measurement {
     double min_light_fraction = 0.01;  ///< blocks holding less of the judge's light are not judged
     /// Of the judged modes (the judge sets its own). The files ask for 4, enough at 320 x 240; but a
     /// 12 x 9 block that a sharp light edge crosses keeps a few percent of anti-aliasing noise at 4
-    /// (cone-light: rt -3.9% at 4, 0.0% at 1024 samples per pixel), which is not what is measured.
+    /// (cone-light's rt: docs/scene-classes.md, 'The measurement'), which is not what is measured.
     unsigned samples_per_pixel = 16;
     /// pm's irradiance cache error for the judged renders (unset: the file's, the default). The
     /// cache bounds its records' radii in pixels of an image at least 800 wide
     /// (irradiance_cache_pass.hpp), so at 48 x 36 it interpolates no further in the scene than at
-    /// picture sizes; before that bound, one record spanned much of the scene (scale-km, block 1,1:
-    /// -13.7% with the cache, -2.3% with a final gather at every sample).
+    /// picture sizes; before that bound, one record spanned much of the scene (scale-km with the
+    /// cache against a final gather at every sample: docs/scene-classes.md, 'The measurement').
     std::optional<float> irradiance_cache_error{};
 };
 

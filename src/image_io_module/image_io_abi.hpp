@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // The C interface of photon's image module (photon-image-io.so), shared by the module and the
-// programs that load it (load_image_io.hpp). OpenImageIO pulls in some 250 shared libraries
-// whose loading and static initialisation cost a program about a second at every start (0.3
-// CPU-s user + 0.2 sys on this project's machine, for `photon --version` as for a render); the
+// programs that load it (load_image_io.hpp). OpenImageIO pulls in hundreds of shared libraries
+// whose loading and static initialisation cost a program time at every start (bench/README.md),
+// for `photon --version` as for a render; the
 // photon program and its tools load the module, and with it OpenImageIO, only when they read
 // or write an image. Plain C types only, so the two sides need not agree on a C++ ABI.
 // Every function returns 0 on success; otherwise it writes a NUL-terminated message of at most

@@ -17,7 +17,7 @@ global_settings { assumed_gamma 1.0 ambient_light rgb 0 max_trace_level 4 }
 global_settings {
   width 320 height 240
   render_mode pm
-  global_photons 1000000  // at 400000, k = 100 photons span the corners: -3.9% there, -1.4% at 1 M
+  global_photons 1000000  // at 400000, k = 100 photons span the corners: dark there (docs/scene-classes.md)
   caustic_photons 0
   global_estimate { count 100 }
   final_gather 256

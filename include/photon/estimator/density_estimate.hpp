@@ -112,8 +112,8 @@ private:
 /// photons found. Photons are selected in the flattened metric, but on a curved surface the part
 /// inside the flattened ellipsoid is a cap whose chord is shorter than the flattened radius, and a
 /// cap of chord c on a sphere has area exactly pi c^2 (Archimedes), convex or concave. On a plane
-/// both radii are the same. Dividing by the flattened radius read a 0.4 m ball 5% dark at k = 100
-/// and 35-40% dark at k = 2000.
+/// both radii are the same. Dividing by the flattened radius reads a ball dark, more so the more
+/// photons an estimate takes (docs/design.md, 'Radiance estimation').
 template <Scalar S>
 [[nodiscard]] Rgb<S> estimate_irradiance(const PhotonMap& map, const Vec3<S>& x, const Vec3<S>& n,
                                          const EstimateSettings& settings, EstimateScratch& scratch,

@@ -5,9 +5,9 @@
 // neighbouring cells stands in for it. For cells a and b,
 // E[(L_a - L_b)^2] = var_a + var_b + (mean_a - mean_b)^2 >= var_a + var_b, so the squared
 // differences of disjoint pairs of neighbours over-estimate the variance of the gather's sum: the
-// estimate errs towards gathering more (with pairs in phi alone, 1.4x the spread of repeated
-// gathers at room 1's records, median). The irradiance cache gathers a record again where it is
-// above what it wants (gather_record, integrator/irradiance_cache_pass.hpp).
+// estimate errs towards gathering more (by how much: docs/design.md, 'Irradiance cache'). The
+// irradiance cache gathers a record again where it is above what it wants (gather_record,
+// integrator/irradiance_cache_pass.hpp).
 
 #include <algorithm>
 #include <cmath>

@@ -52,7 +52,7 @@ struct BvhConfig {
 /// BVH8): each node holds its eight children's boxes side by side, so two SSE tests (float; the
 /// same test in plain code for double) check them all with the robust slab test of Ize (2013).
 /// Eight children rather than four cut the chain of dependent node loads that random rays wait
-/// on by a third (bench/README.md: 0.66x to 0.8x Embree on random rays).
+/// on by a third (bench/README.md, '8-wide nodes').
 /// Traversal is ordered by entry distance and skips stacked nodes the closest hit has passed.
 template <Scalar S> class Bvh {
 public:

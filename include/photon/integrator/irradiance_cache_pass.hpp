@@ -43,10 +43,10 @@ template <Scalar S> struct RecordGather {
 /// differ among themselves (the range of their luminance; phi wraps around), so that an edge in
 /// any direction, and a cell beside a bright one, draw rays (Neyman's allocation). The cell's own
 /// first ray is left out of its share: a share chosen by the ray it replaces would favour the
-/// cells whose ray happened to be bright or dark, and bias the mean (3.6% to 12% low on a patch
-/// 3 of 256 cells see). A cell drawing two rays or more takes them in place of its first,
-/// stratified in sub-cells (a sharp-edged light's error falls faster so than with rays at random
-/// in the cell). Returns false, changing nothing, when no cell's neighbours differ.
+/// cells whose ray happened to be bright or dark, and bias the mean (low on a patch few cells
+/// see: docs/design.md, 'Irradiance cache'). A cell drawing two rays or more takes them in place
+/// of its first, stratified in sub-cells (a sharp-edged light's error falls faster so than with
+/// rays at random in the cell). Returns false, changing nothing, when no cell's neighbours differ.
 template <class Integrator, Scalar S>
 bool regather_varying_cells(const Integrator& integrator, const Vec3<S>& x, const Frame<S>& frame,
                             const std::optional<Vec3<S>>& below, GatherStrata strata, double extra,
@@ -131,8 +131,8 @@ template <class SceneT>
     // min and max pixels at the distance the camera sees it from (Tabellion and Lamorlette 2004).
     // The pixels are those of an image at least `cache_reference_width` wide: in a small image a
     // pixel spans much of the scene, and records valid over 1.5 to 24 of them smoothed indirect
-    // light across corners (a 48 x 36 room read 18-23% dark near the floor's corners, 2-6% with a
-    // gather at every pixel). Small images then gather more often, which they can afford.
+    // light across corners, reading them dark (docs/design.md, 'Measurements behind the code's
+    // choices'). Small images then gather more often, which they can afford.
     const unsigned reference_width = std::max(settings.width, cache_reference_width);
     const PixelSpread<S> pixel = camera.pixel_spread(
         reference_width, unsigned(std::lround(double(reference_width) * settings.height / settings.width)));
@@ -181,8 +181,8 @@ template <class SceneT>
         share_lists(settings.share, found, "irradiance cache", Deal::hashed);  // every rank sees every record
         for (auto& list : found) records.insert(records.end(), list.begin(), list.end());
         // Not after the last level: the radii it would shrink there leave holes that no level
-        // fills, and every image sample landing in one gathers in full (room 1 at 320 x 240:
-        // 45% more gather rays for the same picture).
+        // fills, and every image sample landing in one gathers in full (more gather rays for the
+        // same picture: docs/design.md, 'Irradiance cache').
         if (spacing > 1) clamp_radii_to_neighbours(records, error);
         cache = IrradianceCache(records, error);
         if (settings.progress) settings.progress(RenderPhase::precompute, double(++done_levels) / double(levels));

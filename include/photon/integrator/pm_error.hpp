@@ -71,7 +71,8 @@ void extend_pm_judge(const SceneT& scene, const Camera<typename SceneT::scalar_t
     s.mode = RenderMode::sppm;
     // Where a final-gather ray lands pm reads photons of up to max_photon_depth bounces, one
     // diffuse bounce more than sppm's photons make at the same setting: the judge's go one further
-    // (at the paper's depth 10 the two differ by about 1% in room 2; docs/design.md).
+    // (at the paper's depth 10 the difference shows in room 2: docs/design.md, 'What room 2's
+    // judge says').
     if (settings.final_gather_rays > 0 && s.max_photon_depth < SettingsLimits::max_photon_depth) ++s.max_photon_depth;
     s.sppm_passes = std::max(2u, settings.pm_error_passes + settings.pm_error_passes % 2);
     s.time_limit = 0;

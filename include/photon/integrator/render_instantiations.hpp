@@ -2,11 +2,12 @@
 #pragma once
 // The render functions for the scene language's scene types, DefaultScene<float> and
 // DefaultScene<double>, listed once, with the effects plan (`photon check` prints it without
-// rendering) and the scene's commit(), its BVH build (4 of the 10 CPU-s that examples/cornell.cpp
+// rendering) and the scene's commit(), its BVH build (a large part of what examples/cornell.cpp
 // took to compile without it). Header-only use instantiates them in every translation unit that
-// renders (15 to 20 CPU-seconds each at -O3). A program built with PHOTON_SEPARATE_COMPILATION
-// (CMake target photon::compiled) sees them as `extern template` and links the one compiled unit
-// that instantiates them (src/render_instantiations.cpp); other scene types are unaffected.
+// renders, each slow to compile at -O3 (bench/README.md). A program built with
+// PHOTON_SEPARATE_COMPILATION (CMake target photon::compiled) sees them as `extern template` and
+// links the one compiled unit that instantiates them (src/render_instantiations.cpp); other scene
+// types are unaffected.
 
 #include "../scene/scene.hpp"
 #include "render.hpp"

@@ -2,8 +2,8 @@
 #pragma once
 // An allocator for large arrays read in random order (BVH nodes, a mesh's leaf triangles). On
 // Linux, an array of 2 MiB or more is aligned to 2 MiB and marked for transparent huge pages
-// (madvise), so a ray's walk over tens of megabytes misses the TLB far less: +30 % incoherent
-// rays per second on a million-triangle mesh (bench/README.md). Elsewhere, and for smaller
+// (madvise), so a ray's walk over tens of megabytes misses the TLB far less: more incoherent
+// rays per second on a large mesh (bench/README.md). Elsewhere, and for smaller
 // arrays, it is std::allocator.
 
 #include <cstddef>

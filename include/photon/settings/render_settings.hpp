@@ -96,8 +96,8 @@ struct RenderSettings {
     std::size_t global_photons = 200'000;   ///< emitted for the global map
     std::size_t caustic_photons = 200'000;  ///< emitted towards caustic targets (skipped if none)
     /// Russian roulette ends photon paths; this cap is only a backstop (a path survives 100 bounces
-    /// at albedo 0.8 with probability 2e-10). The paper's 10 cut room 1's indirect light by 3%;
-    /// its scene files still ask for 10.
+    /// at albedo 0.8 with probability 2e-10). The paper's 10 cuts room 1's indirect light
+    /// (docs/accuracy.md, 'Room 1 against sppm: the photon depth'); its scene files ask for 10.
     unsigned max_photon_depth = 100;
     EmissionSampler emission = EmissionSampler::direct;
 

@@ -53,7 +53,7 @@ inline bool one_of(std::string_view w, Words list) { return std::find(list.begin
 
 /// Keyword tables joined into one hash set, for the questions the interpreter asks of every
 /// identifier it reads (is it reserved, does it start an expression): scanning the tables one
-/// word at a time was 13% of the time of POV-Ray's loop-heavy sample scenes (perf).
+/// word at a time showed in the profile of POV-Ray's loop-heavy sample scenes (bench/README.md).
 class WordSet {
 public:
     WordSet(std::initializer_list<Words> tables) {
