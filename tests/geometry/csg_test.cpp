@@ -367,3 +367,61 @@ TEST_CASE("csg in a scene: each leaf's own material, whole-object questions ask 
     CHECK(plan::shape_name(inverse_lens) == "inverse intersection");
     CHECK_FALSE(plan::is_flat(lens));
 }
+
+TEMPLATE_TEST_CASE("csg: an intersection of planes is bounded by its vertices, an open one only where it closes",
+                   "[geometry][csg]", float, double) {
+    using S = TestType;
+    // An octahedron |x| + |y| + |z| <= 1 from eight planes (shapes2.inc's Octahedron), tilted.
+    const Affine<S> tilt = Affine<S>::rotate_axis(Vec3<S>(S(0.3), S(0.5), S(0.1)), S(40));
+    std::vector<TestCsg<S>> faces;
+    for (int sx : {-1, 1})
+        for (int sy : {-1, 1})
+            for (int sz : {-1, 1}) {
+                const Vec3<S> n = glm::normalize(tilt.vector(Vec3<S>(S(sx), S(sy), S(sz))));
+                faces.push_back(TestCsg<S>(Plane<S>(n, S(1) / std::sqrt(S(3)))));
+            }
+    const auto octahedron = TestCsg<S>::intersection(faces);
+    const BBox<S> b = octahedron.bounds();
+    REQUIRE(b.is_finite());
+    // The box holds every vertex (tilt of the six unit points) and is no larger than they need.
+    Vec3<S> lo(S(10)), hi(S(-10));
+    for (int a = 0; a < 3; ++a)
+        for (S s : {S(-1), S(1)}) {
+            Vec3<S> v(S(0));
+            v[a] = s;
+            const Vec3<S> p = tilt.vector(v);
+            lo = glm::min(lo, p), hi = glm::max(hi, p);
+            CHECK(b.contains(p));
+        }
+    for (int a = 0; a < 3; ++a) {
+        CHECK(double(b.min[a]) == Approx(double(lo[a])).margin(1e-5));
+        CHECK(double(b.max[a]) == Approx(double(hi[a])).margin(1e-5));
+    }
+    // Every hit of random rays lies in the box.
+    Pcg32 rng(11, 3);
+    int hits = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3<S> origin = S(3) * uniform_sphere(rng.uniform2<S>());
+        const Vec3<S> target = S(0.8) * (rng.uniform2<S>().x - S(0.5)) * uniform_sphere(rng.uniform2<S>());
+        const auto h = octahedron.intersect({origin, glm::normalize(target - origin)});
+        if (!h) continue;
+        ++hits;
+        CHECK(b.contains(h->point));
+    }
+    CHECK(hits > 1000);
+
+    // Two planes, a slab: bounded along its normal only. A plane with an inverse side: the same.
+    const auto slab = TestCsg<S>::intersection({Plane<S>({0, 1, 0}, S(1)), Plane<S>({0, -1, 0}, S(1))});
+    CHECK(slab.bounds().max.y == Approx(1).margin(1e-5));
+    CHECK(slab.bounds().min.y == Approx(-1).margin(1e-5));
+    CHECK_FALSE(std::isfinite(slab.bounds().max.x));
+    auto under = TestCsg<S>(Plane<S>({0, -1, 0}, S(1)));  // y >= -1, inverted: y < -1
+    under.invert();
+    const auto open_below = TestCsg<S>::intersection({Plane<S>({0, 1, 0}, S(1)), under});
+    CHECK(open_below.bounds().max.y == Approx(-1).margin(1e-5));
+    CHECK_FALSE(std::isfinite(open_below.bounds().min.y));
+    // A box closes planes that do not close themselves.
+    const auto cut = TestCsg<S>::intersection({Plane<S>({1, 1, 0}, S(0)), Box<S>({-1, -1, -1}, {1, 1, 1})});
+    CHECK(cut.bounds().max.x == Approx(1).margin(1e-5));
+    CHECK(cut.bounds().min.x == Approx(-1).margin(1e-5));
+}

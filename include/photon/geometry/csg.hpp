@@ -37,7 +37,9 @@
 #include <variant>
 #include <vector>
 
+#include "half_space_bounds.hpp"
 #include "offset.hpp"
+#include "plane.hpp"
 #include "solid.hpp"
 
 namespace photon {
@@ -224,11 +226,31 @@ private:
         case CsgOp::intersection:
         case CsgOp::clip: {
             BBox<S> b = BBox<S>::infinite();
+            std::vector<HalfSpace> planes;  // children that are planes bound it together
             for (std::uint32_t k = 0; k < n.count; ++k) {
+                const Node& kid = nodes_[kids[k]];
+                if constexpr ((std::is_same_v<Leaves, Plane<S>> || ...)) {
+                    if (const auto* plane = kid.op == CsgOp::leaf ? std::get_if<Plane<S>>(&leaves_[kid.first]) : nullptr) {
+                        const double sign = kid.inverted ? -1.0 : 1.0;
+                        planes.push_back({sign * glm::dvec3(plane->normal()), sign * double(plane->offset())});
+                        continue;
+                    }
+                }
                 const BBox<S> c = node_bounds(kids[k]);
                 b.min = glm::max(b.min, c.min);
                 b.max = glm::min(b.max, c.max);
             }
+            if (b.is_empty()) return BBox<S>{};
+            if (planes.empty()) return b;
+            for (int a = 0; a < 3; ++a) {  // the other children's box closes the planes too
+                glm::dvec3 axis(0.0);
+                axis[a] = 1.0;
+                if (std::isfinite(b.max[a])) planes.push_back({axis, double(b.max[a])});
+                if (std::isfinite(b.min[a])) planes.push_back({-axis, -double(b.min[a])});
+            }
+            const BBox<S> p = half_space_bounds<S>(planes);
+            b.min = glm::max(b.min, p.min);
+            b.max = glm::min(b.max, p.max);
             return b.is_empty() ? BBox<S>{} : b;
         }
         case CsgOp::difference: return node_bounds(kids[0]);
