@@ -30,6 +30,21 @@ template <Scalar S>
     return std::max(intersection_error(p, origin), S(stored));
 }
 
+/// The length of a shadow ray from `origin` to a light's point `distance` away along unit
+/// `direction`: short of the point by the rounding bound of a hit there, so that the surface a
+/// light sits on (POV-Ray's lamps placed on a ceiling) does not shadow it at random.
+template <Scalar S>
+[[nodiscard]] inline S shadow_ray_length(const Vec3<S>& origin, const Vec3<S>& direction, S distance) noexcept {
+    if (!std::isfinite(distance)) return distance;
+    return std::max(S(0), distance - S(2) * intersection_error(origin + direction * distance, origin));
+}
+
+/// A photon's origin on a light, moved along unit `direction` by the rounding bound of a hit
+/// there: the surface a light sits on does not catch the photons leaving it.
+template <Scalar S> [[nodiscard]] inline Vec3<S> leaving_light(const Vec3<S>& origin, const Vec3<S>& direction) noexcept {
+    return origin + direction * (S(2) * intersection_error(origin, origin));
+}
+
 /// Origin for a ray leaving `p` on the side of `side_normal` (a unit normal oriented towards
 /// where the new ray goes).
 template <Scalar S>

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../geometry/bbox.hpp"
+#include "../geometry/offset.hpp"
 #include "../light/light.hpp"
 #include "../material/highlight.hpp"
 #include "../material/material.hpp"
@@ -109,7 +110,8 @@ template <class SceneT, Scalar S>
                     const auto incident = sampler.sample(u);
                     if (!incident) return g;
                     ++ctx.rays.shadow;
-                    const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
+                    const Ray<S> shadow{shadow_origin, incident->direction,
+                                        shadow_ray_length(shadow_origin, incident->direction, incident->distance)};
                     Rgb<S> filter(S(1));
                     if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) {
                         if (!options.filtered_shadows) return g;
@@ -138,7 +140,8 @@ template <class SceneT, Scalar S>
             Rgb<S> filter(S(1));
             if (shadows) {
                 ++ctx.rays.shadow;
-                const Ray<S> shadow{shadow_origin, incident->direction, incident->distance};
+                const Ray<S> shadow{shadow_origin, incident->direction,
+                                        shadow_ray_length(shadow_origin, incident->direction, incident->distance)};
                 if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) {
                     if (!options.filtered_shadows) continue;
                     filter = filtered_shadow(scene, shadow);

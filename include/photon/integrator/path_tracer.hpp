@@ -160,7 +160,9 @@ private:
             if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, sample->direction) > S(0))) continue;
             if (light_casts_shadows(light)) {
                 ++ctx.rays.shadow;
-                if (scene_.occluded(Ray<S>{shadow_origin, sample->direction, sample->distance})) continue;
+                if (scene_.occluded(Ray<S>{shadow_origin, sample->direction,
+                                           shadow_ray_length(shadow_origin, sample->direction, sample->distance)}))
+                    continue;
             }
             const S weight = sample->delta || !mis_ || brilliance ? S(1) : power_heuristic(sample->pdf, pd * cos_theta * inv_pi<S>);
             Rgb<S> f = brdf * ((brilliance ? diffuse_cosine(material, cos_theta) : cos_theta) * weight);

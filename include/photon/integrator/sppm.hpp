@@ -29,6 +29,7 @@
 
 #include "../film/error_estimate.hpp"
 #include "../film/film.hpp"
+#include "../geometry/offset.hpp"
 #include "../light/light.hpp"
 #include "../parallel/parallel_for.hpp"
 #include "../parallel/work_share.hpp"
@@ -147,7 +148,7 @@ template <class SceneT>
                     power = plan.power[l] * p.power;
                 } else {
                     const Vec3<S> dir = sample_emission_direction(lights[l], settings.emission, rng);
-                    ray = Ray<S>{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
+                    ray = Ray<S>{leaving_light(sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir), dir};
                     power = plan.power[l] * emission_weight(lights[l], dir);
                 }
                 for (unsigned depth = 0; depth < settings.max_photon_depth; ++depth) {

@@ -104,7 +104,7 @@ template <class SceneT>
         for (unsigned i = 0; i < pilot.photons_per_light; ++i) {
             Pcg32 rng(pilot.seed ^ 0x70696c6f74ULL, std::uint64_t(l) * pilot.photons_per_light + i);
             const Vec3<S> dir = sample_emission_direction(lights[l], sampler, rng);
-            Ray<S> ray{sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir};
+            Ray<S> ray{leaving_light(sample_emission_origin(lights[l], dir, rng.uniform2<S>()), dir), dir};
             // The power the photon would carry: its direction's share of the profile, and the
             // light's falloff at its first hit, so a light that does not fall off (POV-Ray's
             // default) counts the power its photons really bring, not its nominal power.

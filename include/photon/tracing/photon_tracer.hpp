@@ -266,7 +266,7 @@ template <class SceneT>
         }
         const Light<S>& light = lights[l];
         const Vec3<S> dir = sample_emission_direction(light, settings.sampler, rng);
-        const Vec3<S> origin = sample_emission_origin(light, dir, rng.uniform2<S>());
+        const Vec3<S> origin = leaving_light(sample_emission_origin(light, dir, rng.uniform2<S>()), dir);
         const bool unaimed = settings.collect_unaimed_caustics && !aim.covers(l, dir);
         detail::trace_photon_path(scene, &light, Ray<S>{origin, dir}, plan.scale[l] * emission_weight(light, dir), settings,
                                   false, unaimed, rng, block);
@@ -306,7 +306,8 @@ template <class SceneT>
         // The photon carries I / (pdf * n): intensity along its direction over the density it was
         // drawn with, where plan.scale = power / n and I = profile * power / emission solid angle.
         const Rgb<S> power = plan.scale[l] * (profile / (emission_solid_angle(light) * sample.pdf));
-        const Vec3<S> origin = sample_emission_origin(light, sample.direction, rng.uniform2<S>());
+        const Vec3<S> origin =
+            leaving_light(sample_emission_origin(light, sample.direction, rng.uniform2<S>()), sample.direction);
         const std::size_t before = block.photons.size();
         detail::trace_photon_path(scene, &light, Ray<S>{origin, sample.direction}, power, settings, true, false, rng, block);
         if (sample.broad) {  // a mirror plane's: kept apart, read like the global map
