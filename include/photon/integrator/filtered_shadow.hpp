@@ -31,7 +31,11 @@ template <class SceneT, Scalar S>
         if (is_black(transmission)) return Rgb<S>(S(0));
         const Vec3<S>& x = surface->hit.point;
         const Facing<S> f = facing(surface->hit.normal, ray.direction);
-        pass *= transmission * segment_transmittance(m, f, surface->hit.t);  // dimmed inside, on the way out
+        // Dimmed inside, on the way out; but as POV-Ray's shadow rays (ComputeShadowTexture, which
+        // fades only where fade_power > 0), not by the fade its camera rays take at power 0.
+        const auto& absorption = m.params().absorption;
+        const bool unfaded = absorption.law() == Absorption<S>::Law::pov_fade && absorption.fade_power() == S(0);
+        pass *= transmission * (unfaded ? Rgb<S>(S(1)) : segment_transmittance(m, f, surface->hit.t));
         if (max_component(pass) <= S(0)) return pass;
         // On, past the surface, along the same line.
         const Vec3<S> next = offset_origin(x, -f.normal, intersection_error(x, ray.origin));
