@@ -160,6 +160,13 @@ template <Scalar S>
              "with radiosity, POV-Ray's `emission` also lights other surfaces; photon shows it on this surface "
              "only (its light comes from light sources)",
              "approximated finish", "emission");
+    // Before 3.7 POV-Ray's radiosity sees a written ambient as glow, which lights the surfaces
+    // around it (the default 0.1 does too, faintly, and is not warned of).
+    else if (global.radiosity && f.written.count("ambient") && written != Vector3(0.0))
+        warn(item("ambient"),
+             "with radiosity before #version 3.7, POV-Ray's `ambient` also lights other surfaces; photon shows it "
+             "on this surface only (its light comes from light sources)",
+             "approximated finish", "ambient");
     if (f.brilliance != 1 && (global.radiosity || global.photons))
         warn(item("brilliance"),
              "`brilliance " + format_number(f.brilliance) +
