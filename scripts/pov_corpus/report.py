@@ -126,14 +126,16 @@ def write_judged(L, sc, names):
     judged = [s for s in names if sc[s].get("judge")]
     if not judged:
         return
-    from . import judge
+    seconds = max(sc[s]["judge"].get("sppm_seconds", 0) for s in judged)
     L.append("## Global illumination: which program is right\n")
     L.append("The scenes photon renders in `pm` (their files ask for radiosity). *Language*: photon `rt` against "
              "POV-Ray at `+Q8` (radiosity, photons and media off), by the corpus measure. *Against the judge*: "
              "the relative RMS difference of linear 8x8 block means from photon's `sppm` (two runs of %d s, seeds 1 "
              "and 2; the judge is their mean, its noise floor half the RMS of their difference), for photon `pm` "
              "with its defaults and POV-Ray with the file's radiosity. *Closer*: the smaller error, where the two "
-             "differ by more than the floor.\n" % judge.SPPM_SECONDS)
+             "differ by more than the floor. Like photon's `pm`, the judge sees light from light sources and the "
+             "sky only: where a file's surfaces glow (`emission`, or `ambient` before 3.7) POV-Ray's radiosity lets "
+             "them light others, and photon warns.\n" % seconds)
     L.append("| scene | language (blocks differing) | judge's floor | photon `pm` | POV-Ray | closer | photon CPU s | POV-Ray CPU s |")
     L.append("|---|---:|---:|---:|---:|---|---:|---:|")
     for s in judged:
