@@ -213,3 +213,53 @@ TEST_CASE("the Cornell box has its red wall on the left of the image", "[dsl][sc
     CHECK(left.x > 2 * left.z);    // red wall
     CHECK(right.z > 2 * right.x);  // blue wall
 }
+
+TEST_CASE("lamps placed on the ceiling light the floor, as in POV-Ray's radiosity/cornell.pov", "[dsl][render]") {
+    // The sample scene puts its area lights exactly on the ceiling's triangles: every shadow ray
+    // ends on the ceiling, and rounding decided whether the ceiling blocked it (dark streaks).
+    const std::string text =
+        "global_settings { assumed_gamma 1 ambient_light 0 }\n"
+        "camera { location <27.8, 27.3, -80> look_at <27.8, 10, 27.95> angle 39.5 }\n"
+        "#declare DX = 13/3; #declare DZ = 10.5/3;\n"
+        "#declare Lamp = light_source { <27.8, 54.88, 27.95> rgb <1, 0.67, 0.21> * 7\n"
+        "  area_light DX*x, DZ*z, 4, 4 jitter adaptive 0\n"
+        "  spotlight radius -90 falloff 90 tightness 1 point_at <27.8, 0, 27.95>\n"
+        "  fade_power 2 fade_distance (DX + DZ) / 2 }\n"
+        "#declare I = 0; #while (I < 3) #declare J = 0; #while (J < 3)\n"
+        "  light_source { Lamp translate <I*DX - (13 - DX)/2, 0, J*DZ - (10.5 - DZ)/2> }\n"
+        "#declare J = J + 1; #end #declare I = I + 1; #end\n"
+        "union { triangle { <55.28, 0, 0>, <0, 0, 0>, <0, 0, 55.92> }\n"
+        "  triangle { <55.28, 0, 0>, <0, 0, 55.92>, <54.96, 0, 55.92> }\n"
+        "  triangle { <55.6, 54.88, 0>, <55.6, 54.88, 55.92>, <0, 54.88, 55.92> }\n"
+        "  triangle { <55.6, 54.88, 0>, <0, 54.88, 55.92>, <0, 54.88, 0> }\n"
+        "  triangle { <0, 54.88, 55.92>, <55.6, 54.88, 55.92>, <54.96, 0, 55.92> }\n"
+        "  triangle { <0, 54.88, 55.92>, <54.96, 0, 55.92>, <0, 0, 55.92> }\n"
+        "  pigment { rgb 1 } finish { ambient 0 diffuse 0.75 } }\n";
+    std::vector<dsl::Diagnostic> warnings;
+    dsl::ParseOptions po;
+    po.diagnostics = collect(warnings);
+    dsl::BuildOptions bo;
+    bo.diagnostics = collect(warnings);
+    bo.overrides = {{"width", 48u}, {"height", 36u}, {"mode", std::string("rt")}};
+    const auto b = dsl::build<float>(dsl::parse_string(text, "ceiling-lamps.pov", po), bo);
+    const RenderResult r = render(b.scene, b.camera, b.settings);
+    // Below the ceiling (the top sixth) the back wall: its light varies slowly under lamps 55
+    // units away, so no row is far below its neighbours (the streaks) and few pixels of the
+    // middle columns far below their row's mean (sampling noise puts a few there; the ceiling
+    // blocking at random put 20 of 288).
+    const unsigned w = b.settings.width, h = b.settings.height;
+    std::vector<double> rows;
+    unsigned dark = 0, pixels = 0;
+    for (unsigned y = h / 6; y < h / 2; ++y) {  // the back wall, above where the floor meets it
+        double row = 0;
+        for (unsigned x = w / 4; x < 3 * w / 4; ++x) row += r.film.at(x, y).x;
+        row /= w / 2;
+        rows.push_back(row);
+        for (unsigned x = w / 4; x < 3 * w / 4; ++x, ++pixels) dark += r.film.at(x, y).x < 0.7 * row ? 1 : 0;
+    }
+    unsigned streaks = 0;
+    for (std::size_t i = 1; i + 1 < rows.size(); ++i) streaks += rows[i] < 0.8 * 0.5 * (rows[i - 1] + rows[i + 1]) ? 1 : 0;
+    CHECK(streaks == 0);
+    CHECK(pixels > 0);
+    CHECK(dark <= pixels / 50);
+}
