@@ -67,6 +67,7 @@ def main():
                     help="keep the renders of the last run (saved after every scene) and render only the rest")
     ap.add_argument("--judge", action="store_true",
                     help="also the radiosity scenes against photon's sppm judge, and POV-Ray at +Q8 against photon rt")
+    ap.add_argument("--photon-commit", default=None, help="the commit the photon program was built from, for the report")
     ap.add_argument("--judge-seconds", type=float, default=120,
                     help="time of each of the two sppm judge renders per radiosity scene")
     ap.add_argument("--work", default="/tmp/photon-pov-corpus")
@@ -80,6 +81,8 @@ def main():
     if a.report_only:
         with open(results_file) as f:
             run = json.load(f)
+        if a.photon_commit:
+            run["photon_commit"] = a.photon_commit
         report.write(a, run)
         return
     photon = os.path.abspath(a.photon)
@@ -95,6 +98,7 @@ def main():
     run = {"date": datetime.date.today().isoformat(), "machine": machine(), "examples": source,
            "width": a.width, "height": a.height, "threads": a.threads, "rendered": not a.no_render,
            "povray": None, "photon_seconds": a.photon_seconds, "povray_seconds": a.povray_seconds,
+           "photon_commit": a.photon_commit,
            "scenes": {}}
     previous = {}
     if a.resume and os.path.exists(results_file):

@@ -64,6 +64,8 @@ def write(a, run):
              "standard includes of `povray-includes`." % (run["date"], run["machine"], run["examples"]))
     compared = [s for s in names if sc[s].get("povray", {}) and sc[s]["povray"].get("image")]
     if run.get("povray"):
+        if run.get("photon_commit"):
+            L.append(" photon built from commit %s." % run["photon_commit"])
         L.append(" Each scene rendered at %dx%d by %s (`+A0.3`, the file's own settings, cached between runs) "
                  "and by photon with its defaults (`photon render SCENE --width %d --height %d`: `rt` where the "
                  "file has no radiosity or photons, `pm` where it has), one render at a time, both on %d threads, "
