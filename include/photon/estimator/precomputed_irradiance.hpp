@@ -56,12 +56,21 @@ public:
                                                  std::vector<Neighbor<float>>& buffer, Visible&& visible,
                                                  unsigned candidates = 4) const {
         if (tree_.empty()) return std::nullopt;
-        auto found = tree_.k_nearest(x, candidates, max_radius, buffer, [&](std::uint32_t i, float) {
+        const auto same_surface = [&](std::uint32_t i, float) {
             return glm::dot(decode_octahedral(tree_.payload(i).normal), n) > min_normal_cosine;
-        });
+        };
+        // The nearest alone first: it nearly always passes, and a one-nearest search is cheaper.
+        // Where it does not, the `candidates` nearest give the same answer as if searched at once.
+        const auto nearest = tree_.k_nearest(x, 1, max_radius, buffer, same_surface);
+        if (nearest.neighbors.empty()) return std::nullopt;
+        const std::uint32_t first = nearest.neighbors.front().index;
+        if (visible(tree_.position(first), decode_octahedral(tree_.payload(first).normal))) return tree_.payload(first).irradiance;
+        if (candidates < 2) return std::nullopt;
+        auto found = tree_.k_nearest(x, candidates, max_radius, buffer, same_surface);
         std::sort(buffer.begin(), buffer.begin() + std::ptrdiff_t(found.neighbors.size()),
                   [](const Neighbor<float>& a, const Neighbor<float>& b) { return a.distance2 < b.distance2; });
         for (const Neighbor<float>& c : found.neighbors) {
+            if (c.index == first) continue;  // already seen hidden
             const IrradiancePayload& p = tree_.payload(c.index);
             if (visible(tree_.position(c.index), decode_octahedral(p.normal))) return p.irradiance;
         }
