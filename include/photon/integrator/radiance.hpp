@@ -74,7 +74,7 @@ public:
             case RenderMode::pm:
                 result += direct_lighting(scene_, x, above, f.shading, f.normal, -ray.direction, material, albedo,
                                           settings_.shadow_samples, ctx,
-                                          {.reaches = &lights_reaching_, .adaptive_area_lights = true});
+                                          {.reaches = &lights_reaching_, .adaptive_area_lights = true, .coarse_shadows = true});
                 if (!material.has_diffuse()) break;
                 result += brdf * caustic_irradiance(above, f.normal, ctx);
                 result += brdf * (settings_.final_gather_rays > 0
