@@ -196,7 +196,7 @@ for entry in "${scene_list[@]}"; do
     while IFS='|' read -r label options; do
       name=$tag-pm-${label%% (*}; name=${name// /-}
       # --no-error-estimate: the image alone, as POV-Ray renders it (photon render's pm also runs a
-      # short sppm run to estimate its error, up to half pm's time again; docs/accuracy.md).
+      # short sppm run to estimate its error, about a tenth of pm's time again; docs/accuracy.md).
       # shellcheck disable=SC2086  # options are words
       timed "$name" "$photon" "${base[@]}" --mode pm --no-error-estimate --ray-depth 10 $options -o "$work/$name.exr"
       record pm "$label" "$cpu" "$work/$name.exr"

@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
                        "independent half-images (sppm, reference), or pm's distance to its short sppm judge with "
                        "the judge's noise taken out (an .exr keeps it linear)");
     render->add_flag("--no-error-estimate", ro.no_error_estimate,
-                     "pm: do not estimate the error (it runs sppm for up to half pm's own time again to measure "
+                     "pm: do not estimate the error (it runs sppm for about a tenth of pm's own time again to measure "
                      "pm's noise and bias; needed by --target-error)");
     render->add_flag("--no-mis", ro.no_mis,
                      "reference: direct light by shadow rays alone, without multiple importance sampling "

@@ -126,6 +126,7 @@ static int render_as(SceneOptions& so, const RenderOptions& ro, photon::WorkShar
     if (!ro.error_image.empty() && pm && settings.pm_error_passes == 0)
         throw std::runtime_error("--error-image: pm estimates its error only without --no-error-estimate");
     if (!ro.error_image.empty()) photon::image_module::check_writable_image_path(ro.error_image);
+    if (!ro.error_image.empty() && pm) settings.pm_error_stride = 1;  // an error image shows every pixel's error
     if (!so.quiet) {
         std::cerr << "photon: " << so.scene << ": " << built.scene.objects().size() << " objects, "
                   << built.scene.lights().size() << " light" << (built.scene.lights().size() == 1 ? "" : "s") << ", "

@@ -18,11 +18,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "../math/rng.hpp"
 #include "film.hpp"
 
 namespace photon {
@@ -42,7 +44,11 @@ struct ErrorEstimate {
     /// left was smaller than the floor (judge_noise / 100) it was clamped to.
     unsigned judge_passes = 0;
     double judge_noise = 0;
+    /// Against a judge: twice the standard error of the normalised MSE, the least it resolves;
+    /// at_floor: the error was below it, and normalised_mse holds the upper bound ("below").
+    double resolution = 0;
     bool at_floor = false;
+    unsigned judge_stride = 1;  ///< the judge rendered one pixel of each judge_stride^2 (in_pixel_subset)
 };
 
 /// The half-images' mean, the rendered image: weighted by the samples (passes) each holds.
@@ -119,40 +125,78 @@ void summarise_blocks(ErrorEstimate& e, const std::vector<double>& sum_a, const 
     return e;
 }
 
+/// Whether pixel (x, y) is the one of its `stride` x `stride` tile that a judge on a subset of
+/// the pixels renders (sppm's sppm_pixel_stride): one per tile, at a place hashed from the tile,
+/// so that the subset follows no row, column or diagonal of the scene. Every pixel for stride 1.
+[[nodiscard]] inline bool in_pixel_subset(unsigned x, unsigned y, unsigned stride) noexcept {
+    if (stride <= 1) return true;
+    const std::uint64_t tile = (std::uint64_t(y / stride) << 32) | (x / stride);
+    const std::uint64_t pick = mix64(tile ^ 0x7375627365747069ULL) % (std::uint64_t(stride) * stride);
+    return x % stride == pick % stride && y % stride == pick / stride;
+}
+
+/// Pixels per side of the tiles whose sums give the estimate's own uncertainty: wider than the
+/// judge's photon radius (2 pixels at its start), so that noise shared by neighbours stays in one.
+inline constexpr unsigned error_resolution_tile = 8;
+
 /// The error of `image`, noise and bias alike, against a consistent judge that is the mean of
 /// two independent halves A and B (a short sppm run, integrator/pm_error.hpp): with J = (A + B) / 2
 /// and truth T, E|image - J|^2 = |image - T|^2 + E|J - T|^2, and ((A - B) / 2)^2 estimates the last
-/// term, so their difference estimates the image's squared error. Summed over the image and over
-/// each block's mean as estimate_error does; a sum left below 1% of the judge's noise (the
-/// subtraction cannot resolve less) is clamped there and marked. `*error_film`, if given: per
-/// pixel and channel sqrt(max(0, (image - J)^2 - ((A - B) / 2)^2)), noisy where the judge is.
+/// term, so their difference estimates the image's squared error. Only the pixels of the judge's
+/// subset count (in_pixel_subset, `stride`). Summed over the image and over each block's mean as
+/// estimate_error does.
+///
+/// The difference of two sums is itself uncertain: it is resolved only when it is more than twice
+/// its standard error. Per pixel, D = (image - A)^2 - (image - B)^2 has mean zero and, for
+/// Gaussian noise, four times the variance of the estimate's own term (with image - T = b and
+/// the halves' noises of variance s^2: 8 b^2 s^2 + 4 s^4 against 2 b^2 s^2 + s^4), so the sum of
+/// D over each tile of error_resolution_tile^2 subset pixels, squared and summed over the tiles,
+/// is four times the estimate's variance: neighbours that share the judge's photons stay in one
+/// tile, and the error's own variation over the image does not enter. An unresolved estimate is
+/// marked at_floor and reports its upper bound, max(0, difference) plus twice the standard error:
+/// "below X". `*error_film`, if given: per pixel and channel
+/// sqrt(max(0, (image - J)^2 - ((A - B) / 2)^2)), noisy where the judge is; zero off the subset.
 [[nodiscard]] inline ErrorEstimate estimate_error_against(const Film& image, const Film& a, const Film& b,
                                                           unsigned judge_passes, unsigned grid = 8,
-                                                          Film* error_film = nullptr) {
+                                                          Film* error_film = nullptr, unsigned stride = 1) {
     if (a.width() != b.width() || a.height() != b.height() || image.width() != a.width() || image.height() != a.height())
         throw std::invalid_argument("estimate_error_against: the images differ in size");
     ErrorEstimate e;
     e.available = true;
     e.judge_passes = judge_passes;
+    e.judge_stride = std::max(1u, stride);
     if (error_film) *error_film = Film(a.width(), a.height());
+    const unsigned tile = error_resolution_tile * std::max(1u, stride);
+    const unsigned tile_columns = (a.width() + tile - 1) / tile, tile_rows = (a.height() + tile - 1) / tile;
+    std::vector<double> tile_split(std::size_t(tile_columns) * tile_rows, 0.0);  // sums of D
     double squared_difference = 0, squared_noise = 0, squared_judge = 0;
-    for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-        const Rgb<double> pa(a.pixels()[i]), pb(b.pixels()[i]), p(image.pixels()[i]);
-        const Rgb<double> judge = (pa + pb) * 0.5, noise = (pa - pb) * 0.5, difference = p - judge;
-        const double n2 = glm::dot(noise, noise);
-        squared_difference += glm::dot(difference, difference);
-        squared_noise += n2;
-        squared_judge += glm::dot(judge, judge) - n2;
-        if (error_film) {
-            const Rgb<double> left = glm::max(difference * difference - noise * noise, Rgb<double>(0.0));
-            error_film->pixels()[i] = Rgb<float>(glm::sqrt(left));
+    for (unsigned y = 0; y < a.height(); ++y)
+        for (unsigned x = 0; x < a.width(); ++x) {
+            if (!in_pixel_subset(x, y, stride)) continue;
+            const std::size_t i = std::size_t(y) * a.width() + x;
+            const Rgb<double> pa(a.pixels()[i]), pb(b.pixels()[i]), p(image.pixels()[i]);
+            const Rgb<double> judge = (pa + pb) * 0.5, noise = (pa - pb) * 0.5, difference = p - judge;
+            const double n2 = glm::dot(noise, noise), d2 = glm::dot(difference, difference);
+            squared_difference += d2;
+            squared_noise += n2;
+            squared_judge += glm::dot(judge, judge) - n2;
+            const Rgb<double> from_a = p - pa, from_b = p - pb;
+            tile_split[std::size_t(y / tile) * tile_columns + x / tile] += glm::dot(from_a, from_a) - glm::dot(from_b, from_b);
+            if (error_film) {
+                const Rgb<double> left = glm::max(difference * difference - noise * noise, Rgb<double>(0.0));
+                error_film->pixels()[i] = Rgb<float>(glm::sqrt(left));
+            }
         }
-    }
     if (squared_judge > 0) {
         e.judge_noise = squared_noise / squared_judge;
-        const double floor = e.judge_noise / 100;
-        e.normalised_mse = (squared_difference - squared_noise) / squared_judge;
-        if (e.normalised_mse < floor) e.normalised_mse = floor, e.at_floor = true;
+        const double net = (squared_difference - squared_noise) / squared_judge;
+        // Twice the standard error: 2 sqrt(sum D^2 / 4).
+        double split_squared = 0;
+        for (const double t : tile_split) split_squared += t * t;
+        e.resolution = std::sqrt(split_squared) / squared_judge;
+        const double resolution = e.resolution;
+        e.normalised_mse = net;
+        if (net < resolution) e.normalised_mse = std::max(0.0, net) + resolution, e.at_floor = true;
         e.relative_rmse = std::sqrt(e.normalised_mse);
     }
 
@@ -163,6 +207,7 @@ void summarise_blocks(ErrorEstimate& e, const std::vector<double>& sum_a, const 
     for (unsigned y = 0; y < a.height(); ++y) {
         const unsigned row = y * e.grid / a.height();
         for (unsigned x = 0; x < a.width(); ++x) {
+            if (!in_pixel_subset(x, y, stride)) continue;
             const std::size_t block = std::size_t(row) * e.grid + x * e.grid / a.width();
             auto sum = [](const Rgb<float>& p) { return double(p.x) + p.y + p.z; };
             sum_image[block] += sum(image.at(x, y));
@@ -197,8 +242,14 @@ void summarise_blocks(ErrorEstimate& e, const std::vector<double>& sum_a, const 
                   100 * e.worst_block, e.worst_block_column, e.worst_block_row);
     std::string text = line;
     if (e.judge_passes > 0) {
-        std::snprintf(line, sizeof line, "; against a short sppm run of %u passes, whose own noise, normalised MSE %.3g, is subtracted",
-                      e.judge_passes, e.judge_noise);
+        std::snprintf(line, sizeof line, "; against a short sppm run of %u passes", e.judge_passes);
+        text += line;
+        if (e.judge_stride > 1) {
+            std::snprintf(line, sizeof line, " on one pixel in %u", e.judge_stride * e.judge_stride);
+            text += line;
+        }
+        std::snprintf(line, sizeof line, ", whose own noise, normalised MSE %.3g, is subtracted (resolving %.3g)",
+                      e.judge_noise, e.resolution);
         text += line;
     }
     return text;

@@ -10,20 +10,26 @@
 //
 // The run's size: even passes until its own noise is at most half the error it measures (the
 // subtraction is then of the smaller term), or it has taken `pm_error_time` times pm's own render
-// time (after 4 passes: a first estimate), or `pm_error_passes` passes. What it cannot see:
-// sppm's own bias at that many passes (its radii have not shrunk to zero), counted as pm's.
+// time (after 2 passes, one per half: a first estimate), or `pm_error_passes` passes. On a large
+// image it renders one pixel of each tile of a few pixels (judge_pixel_stride): the error's sums
+// need thousands of pixels, not every one, and the judge then costs a tenth of pm. An estimate
+// smaller than the subtraction resolves says so ("below X", film/error_estimate.hpp). What it
+// cannot see: sppm's own bias at that many passes (its radii have not shrunk to zero), counted
+// as pm's.
 //
 // Budgets (time_limit, target_error): pm renders again with twice the photons and twice the
 // gather rays, each render compared with the same judge (run again, another seed, when pm's error
-// falls below its noise), until the target is met (or the estimate sits at its floor, below what
-// the judge resolves), the estimate stalls above the target (two renders without a 10% fall: the
-// judge's own error is reached), the next render would pass the time limit, or the photon counts
-// reach their limits or the memory's. The image is the last render's, not an average: doubling
+// falls below its noise or does not resolve it), until the target is met (by a resolved estimate,
+// or by the bound "below X" of one the judge does not resolve), the estimate stalls above the
+// target (two renders without a 10% fall: the judge's own error is reached), the next render would
+// pass the time limit, or the photon counts reach their limits or the memory's. The image is the last render's, not an average: doubling
 // the photons shrinks pm's bias, which averaging renders with the same counts cannot.
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <limits>
 
@@ -32,17 +38,29 @@
 
 namespace photon {
 
+/// Pixels of the image the judge of pm's error renders at the least: enough that the error's
+/// sums over them resolve a tenth of a percent (docs/accuracy.md).
+inline constexpr double pm_judge_pixels = 50'000;
+
+/// One pixel of each N x N tile for the judge of a width x height image: N = 1 up to about
+/// 4 x pm_judge_pixels, at most 8.
+[[nodiscard]] inline unsigned judge_pixel_stride(unsigned width, unsigned height) noexcept {
+    const double n = std::floor(std::sqrt(double(width) * double(height) / pm_judge_pixels));
+    return unsigned(std::clamp(n, 1.0, 8.0));
+}
+
 /// The judge of pm's error: sppm half-images summed over its runs, weighted by their passes.
 struct PmJudge {
     std::array<Film, 2> halves;
     unsigned passes = 0, runs = 0;
+    unsigned stride = 1;  ///< the runs render one pixel of each stride x stride tile
     double seconds = 0;
 
     [[nodiscard]] bool empty() const noexcept { return passes == 0; }
 
     /// The estimate of `image`'s error against the judge.
     [[nodiscard]] ErrorEstimate estimate(const Film& image, Film* error_film = nullptr) const {
-        return estimate_error_against(image, halves[0], halves[1], passes, 8, error_film);
+        return estimate_error_against(image, halves[0], halves[1], passes, 8, error_film, stride);
     }
 
     /// Adds `run` (its halves, of `passes` / 2 passes each) to the judge.
@@ -63,7 +81,7 @@ struct PmJudge {
 
 /// One more short sppm run for `judge`, compared with `image` after every pass: it stops after an
 /// even pass at which its own noise is at most half the error it measures in `image`, or after
-/// `seconds` (4 passes at least), or at settings.pm_error_passes. Statistics go to `stats.sppm`.
+/// `seconds` (2 passes at least), or at settings.pm_error_passes. Statistics go to `stats.sppm`.
 template <class SceneT>
 void extend_pm_judge(const SceneT& scene, const Camera<typename SceneT::scalar_type>& camera, const RenderSettings& settings,
                      const Film& image, double seconds, PmJudge& judge, RenderStats& stats) {
@@ -78,6 +96,7 @@ void extend_pm_judge(const SceneT& scene, const Camera<typename SceneT::scalar_t
     s.time_limit = 0;
     s.target_error = 0;
     s.on_pass = {};
+    s.sppm_pixel_stride = judge.stride;
     s.seed = mix64(settings.seed ^ 0x706d6a75646765ULL) + judge.runs;  // independent of pm's and of earlier runs
     std::atomic<bool> stop{false};
     s.cancel = &stop;
@@ -86,16 +105,18 @@ void extend_pm_judge(const SceneT& scene, const Camera<typename SceneT::scalar_t
     double distance = 0;  // |image - J|^2 / |J|^2
     const SppmPassCallback measure = [&](unsigned, const Film& film) {
         double squared_difference = 0, squared_judge = 0;
-        for (std::size_t i = 0; i < film.pixels().size(); ++i) {
-            const Rgb<double> j(film.pixels()[i]), d = Rgb<double>(image.pixels()[i]) - j;
-            squared_difference += glm::dot(d, d);
-            squared_judge += glm::dot(j, j);
-        }
+        for (unsigned y = 0; y < film.height(); ++y)
+            for (unsigned x = 0; x < film.width(); ++x) {
+                if (!in_pixel_subset(x, y, judge.stride)) continue;
+                const Rgb<double> j(film.at(x, y)), d = Rgb<double>(image.at(x, y)) - j;
+                squared_difference += glm::dot(d, d);
+                squared_judge += glm::dot(j, j);
+            }
         distance = squared_judge > 0 ? squared_difference / squared_judge : 0;
     };
     s.on_pass = [&](const PassReport& r) {
         if (settings.cancel && settings.cancel->load(std::memory_order_relaxed)) stop = true;
-        if (r.pass % 2 == 1 || r.pass < 4 || !r.error.available) return;
+        if (r.pass % 2 == 1 || r.pass < 2 || !r.error.available) return;
         const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double noise = r.error.normalised_mse;  // relative to J^2 less its noise: near enough to decide
         if (spent >= seconds || noise <= (distance - noise) / 2) stop = true;
@@ -138,6 +159,7 @@ template <class SceneT, class RenderOnce>
         throw std::invalid_argument("render settings: a target error for pm needs its error estimate (pm error passes > 0)");
     RenderSettings step = settings;
     PmJudge judge;
+    judge.stride = settings.pm_error_stride > 0 ? settings.pm_error_stride : judge_pixel_stride(settings.width, settings.height);
     Film image;
     unsigned steps = 0, stalled = 0;
     double lowest = std::numeric_limits<double>::infinity();
@@ -170,10 +192,12 @@ template <class SceneT, class RenderOnce>
             break;
         }
         if (estimating) {
-            // The first run, and another whenever the judge's noise is more than half pm's error.
+            // The first run, and another whenever the judge's noise is more than half pm's error
+            // or the judge does not resolve it.
             const ErrorEstimate now = judge.empty() ? ErrorEstimate{} : judge.estimate(image);
-            if (judge.empty() || (now.judge_noise > now.normalised_mse / 2 && !budget) ||
-                (budget && now.judge_noise > now.normalised_mse / 2 &&
+            const bool coarse = now.at_floor || now.judge_noise > now.normalised_mse / 2;
+            if (judge.empty() || (coarse && !budget) ||
+                (budget && coarse &&
                  rank0(settings.time_limit == 0 || since_start() + settings.pm_error_time * step_seconds < settings.time_limit,
                        "pm budget"))) {
                 RenderStats run_stats;
@@ -195,8 +219,10 @@ template <class SceneT, class RenderOnce>
             stats.stopped_by = "target error";
             break;
         }
-        if (settings.target_error > 0 && stats.error.at_floor) {  // below what the judge resolves: met, as far as it can tell
-            stats.stopped_by = "target error (below the judge's resolution)";
+        // Unresolved, the estimate is a bound: met only when the bound is.
+        if (settings.target_error > 0 && stats.error.available && stats.error.at_floor &&
+            stats.error.relative_rmse <= settings.target_error) {
+            stats.stopped_by = "target error (the bound below what the judge resolves)";
             break;
         }
         // The estimate cannot fall below the judge's own error (its bias, its noise estimate's

@@ -327,6 +327,7 @@ template <class SceneT>
             for (std::size_t y = y0; y < y1; ++y) {
                 if (!owns(settings.share, y)) continue;  // another rank's row
                 for (unsigned x = 0; x < width; ++x) {
+                    if (!in_pixel_subset(x, unsigned(y), settings.sppm_pixel_stride)) continue;  // a judge's subset
                     const std::uint64_t index = std::uint64_t(y) * width + x;
                     SppmPixel& px = pixels[index];
                     // Each half runs its own scrambled (0,2)-sequence over its own passes: one

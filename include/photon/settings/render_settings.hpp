@@ -129,6 +129,9 @@ struct RenderSettings {
     /// sppm: first gathering radius in scene units; 0 chooses it per pixel from the pixel's
     /// footprint at its first visible point (integrator/sppm.hpp).
     float sppm_initial_radius = 0.0f;
+    /// sppm: 1 renders every pixel; N > 1 one pixel of each N x N tile (in_pixel_subset,
+    /// film/error_estimate.hpp), the rest left black: pm's error judge at a fraction of the cost.
+    unsigned sppm_pixel_stride = 1;
 
     /// sppm and reference: a budget. Rendering stops after the pass (sppm) or round of
     /// `samples_per_pixel` samples (reference) at which `time_limit` seconds have passed or the
@@ -140,12 +143,15 @@ struct RenderSettings {
     double time_limit = 0;
     double target_error = 0;
     /// pm: its error is estimated against a short sppm run of at most this many passes (each of
-    /// `sppm_photons_per_pass` photons), taking at most `pm_error_time` times pm's own render
-    /// time after its first 4 passes, fewer once its noise is at most half the error it measures
-    /// (integrator/pm_error.hpp). 0: no estimate (the library's default: it costs time; the
-    /// command line turns it on).
+    /// `sppm_photons_per_pass` photons) on a subset of the pixels, taking at most `pm_error_time`
+    /// times pm's own render time after its first 2 passes, fewer once its noise is at most half
+    /// the error it measures (integrator/pm_error.hpp). 0: no estimate (the library's default: it
+    /// costs time; the command line turns it on).
     unsigned pm_error_passes = 0;
-    double pm_error_time = 0.5;
+    double pm_error_time = 0.1;
+    /// pm: the judge renders one pixel of each N x N tile; 0 chooses N from the image size
+    /// (judge_pixel_stride, integrator/pm_error.hpp), 1 renders every pixel (for an error image).
+    unsigned pm_error_stride = 0;
 
     /// Effects forced on or off against the light-path plan (plan/effects_plan.hpp); all automatic:
     /// the plan decides.
@@ -227,6 +233,8 @@ inline void validate(const RenderSettings& s) {
     if (!(s.pm_error_time >= 0) || !std::isfinite(s.pm_error_time)) fail("pm error time must be finite and >= 0");
     if (!(s.sppm_initial_radius >= 0.0f) || !std::isfinite(s.sppm_initial_radius))
         fail("sppm initial radius must be finite and >= 0 (0: automatic)");
+    if (s.sppm_pixel_stride < 1 || s.sppm_pixel_stride > 64) fail("sppm pixel stride must be from 1 to 64");
+    if (s.pm_error_stride > 64) fail("pm error stride must be from 0 to 64 (0: automatic)");
 }
 
 }  // namespace photon

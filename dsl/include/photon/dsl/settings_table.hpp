@@ -368,11 +368,11 @@ inline constexpr RenderSetting render_settings_table[] = {
      .units = "fraction", .field = member<&RenderSettings::target_error>},
     {.key = "pm_error_passes", .keyword = "pm_error_passes", .flag = "--error-passes",
      .hi = SettingsLimits::max_sppm_passes, .noun = "pm error passes",
-     .help = "pm: estimate the error against a short sppm run of at most this many passes, taking at most half "
-             "pm's own time (0: no estimate, as --no-error-estimate)",
+     .help = "pm: estimate the error against a short sppm run of at most this many passes, taking about a tenth "
+             "of pm's own time (0: no estimate, as --no-error-estimate)",
      .field = member<&RenderSettings::pm_error_passes>,
      .program_default = [](const DefaultContext& c) -> std::optional<SettingValue> {
-         // A number the user can trust or distrust, for at most half pm's own time again.
+         // A number the user can trust or distrust, for about a tenth of pm's own time again.
          if (c.mode == RenderMode::pm) return std::uint64_t(64);
          return std::nullopt;
      }},
