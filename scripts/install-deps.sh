@@ -7,8 +7,9 @@
 #                            the sanitizer build and the fuzzer
 #   install-deps.sh bench    test + Google Benchmark, nanoflann, Embree, OpenImageIO tools
 #   install-deps.sh compare  render + POV-Ray and its sample scenes (scripts/compare-povray.sh,
-#                            scripts/pov-corpus.py), matplotlib, NumPy and Pillow for Debian's
-#                            /usr/bin/python3 (the plots, the corpus's image comparison)
+#                            scripts/pov-corpus.py), matplotlib, NumPy, Pillow and OpenImageIO's
+#                            bindings for Debian's /usr/bin/python3 (the plots, the corpus's image
+#                            comparison, scripts/contact-study.sh's EXR images)
 # Uses sudo only when not already root. Packages already present are not reinstalled.
 set -euo pipefail
 
@@ -17,7 +18,7 @@ purpose=${1:-render}
 render=(build-essential cmake ninja-build pkg-config libglm-dev libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev libfreetype-dev libpng-dev)
 test=("${render[@]}" catch2 povray povray-examples python3-numpy python3-pil clang libclang-rt-14-dev libopenmpi-dev openmpi-bin)
 bench=("${test[@]}" libbenchmark-dev libnanoflann-dev libembree-dev hyperfine bc)
-compare=("${render[@]}" povray povray-examples python3-matplotlib python3-numpy python3-pil)
+compare=("${render[@]}" povray povray-examples python3-matplotlib python3-numpy python3-pil python3-openimageio)
 case "$purpose" in
   render) packages=("${render[@]}") ;;
   test) packages=("${test[@]}") ;;

@@ -51,6 +51,8 @@ struct DirectLightOptions {
     /// that all four miss is missed), so never in the judges; rt tests every ray, as POV-Ray does
     /// without `adaptive`.
     bool coarse_shadows = false;
+    /// False leaves POV-Ray's highlights out: a point no camera ray sees (a final gather's hit).
+    bool highlights = true;
 };
 
 /// The rays of coarse_shadows' first try, one in each quarter of the light.
@@ -85,7 +87,7 @@ template <class SceneT, Scalar S>
                                      const DirectLightOptions& options = {}) {
     Rgb<S> total(S(0));
     const Rgb<S> brdf = albedo * inv_pi<S>;
-    const bool highlights = material.has_highlight();
+    const bool highlights = options.highlights && material.has_highlight();
     const Rgb<S> surface_color = highlights && material.params().metallic > S(0) ? material.highlight_color_at(x) : Rgb<S>(S(1));
     const Rgb<S> highlight_weight = highlights ? material.highlight_weight_at(x) : Rgb<S>(S(0));
     const auto lights = scene.lights();

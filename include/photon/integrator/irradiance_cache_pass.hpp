@@ -122,10 +122,11 @@ template <class SceneT>
 [[nodiscard]] IrradianceCache build_irradiance_cache(const SceneT& scene,
                                                      const Camera<typename SceneT::scalar_type>& camera,
                                                      const PhotonMaps& maps, const RenderSettings& settings,
-                                                     RenderStats& stats) {
+                                                     RenderStats& stats, const std::vector<bool>& lights_reaching = {}) {
     using S = typename SceneT::scalar_type;
     const auto start = std::chrono::steady_clock::now();
-    const RadianceIntegrator<SceneT> integrator(scene, maps, settings);
+    // The lights the image pass shadow-tests: a gather's near hits take direct light from them.
+    const RadianceIntegrator<SceneT> integrator(scene, maps, settings, lights_reaching);
     const float error = settings.irradiance_cache_error;
     // Size of one pixel at unit distance; the validity radius a * R of a record is kept between
     // min and max pixels at the distance the camera sees it from (Tabellion and Lamorlette 2004).

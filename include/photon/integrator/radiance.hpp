@@ -28,6 +28,10 @@
 
 namespace photon {
 
+/// Steps a final-gather path takes through hits nearer than the map's estimate radius before it
+/// reads the map wherever it lands (RadianceIntegrator::gathered_radiance).
+inline constexpr unsigned near_gather_steps = 4;
+
 template <class SceneT> class RadianceIntegrator {
 public:
     using S = typename SceneT::scalar_type;
@@ -268,11 +272,29 @@ private:
         Rgb<S> result(S(0));
         if (material.has_diffuse()) {
             const Vec3<S> above = offset_origin(surface->hit.point, f.normal, error);
-            const Rgb<S> irradiance = maps_.irradiance ? precomputed_irradiance(above, f.normal, ctx)
-                                                       : map_irradiance(maps_.global, settings_.global_estimate,
-                                                                        above, f.normal, ctx);
-            // Irradiance, precomputed or estimated, times the albedo here: right under a texture.
-            result += material.diffuse_at(surface->hit.point) * inv_pi<S> * irradiance;
+            const Rgb<S> albedo = material.diffuse_at(surface->hit.point);
+            // A hit nearer the gathering point than the map's estimate radius lies where a contact
+            // or crevice can be smaller than the estimate's disc, which would blur the light of
+            // the open floor around into it (a lighter band where a ball meets the floor): its
+            // light is traced one step further instead, direct light by a shadow ray and the
+            // rest by one cosine-distributed ray read from the map where it lands (E = pi L).
+            if (distance && surface->hit.t < S(settings_.global_estimate.max_radius)) {
+                result += direct_lighting(scene_, surface->hit.point, above, f.shading, f.normal, -ray.direction, material,
+                                          albedo, 1, ctx, {.reaches = &lights_reaching_, .highlights = false});
+                const Vec3<S> dir = Frame<S>::from_normal(f.shading).to_world(cosine_hemisphere(ctx.rng.uniform2<S>()));
+                if (glm::dot(dir, f.normal) > S(0)) {
+                    ++ctx.rays.gather;
+                    S further = 0;  // its hit, if near too, is traced on: up to near_gather_steps in all
+                    result += albedo * gathered_radiance(Ray<S>{above, dir}, depth + 1, ctx,
+                                                         depth < near_gather_steps ? &further : nullptr);
+                }
+            } else {
+                const Rgb<S> irradiance = maps_.irradiance ? precomputed_irradiance(above, f.normal, ctx)
+                                                           : map_irradiance(maps_.global, settings_.global_estimate,
+                                                                            above, f.normal, ctx);
+                // Irradiance, precomputed or estimated, times the albedo here: right under a texture.
+                result += albedo * inv_pi<S> * irradiance;
+            }
         }
         if (depth < settings_.max_ray_depth && material.is_specular())
             result += specular(ray, *surface, f, error, depth, ctx, true, weight);

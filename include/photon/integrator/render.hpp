@@ -239,7 +239,9 @@ template <class SceneT>
             st.partial = true;
             return Film(s.width, s.height);  // nothing rendered yet
         }
-        if (plan.irradiance_cache) maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, obeyed, st);
+        if (plan.irradiance_cache)
+            maps.irradiance_cache = build_irradiance_cache(scene, camera, maps, obeyed, st,
+                                                           plan.planned ? plan.light_emits() : std::vector<bool>{});
         // A light the plan silenced sends nothing the camera sees: no shadow rays to it either.
         return render_image(scene, camera, maps, obeyed, st, plan.planned ? plan.light_emits() : std::vector<bool>{});
     };

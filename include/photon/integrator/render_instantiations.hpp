@@ -26,7 +26,8 @@
                                                        const PhotonMaps&, const RenderSettings&, RenderStats&,       \
                                                        const std::vector<bool>&, std::vector<std::uint32_t>*);       \
     EXTERN template IrradianceCache build_irradiance_cache<DefaultScene<S>>(                                         \
-        const DefaultScene<S>&, const Camera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&);    \
+        const DefaultScene<S>&, const Camera<S>&, const PhotonMaps&, const RenderSettings&, RenderStats&,      \
+        const std::vector<bool>&);                                                                                   \
     EXTERN template Film render_sppm<DefaultScene<S>>(const DefaultScene<S>&, const Camera<S>&,               \
                                                       const RenderSettings&, RenderStats&, const SppmPassCallback&,  \
                                                       Film*, std::array<Film, 2>*);                                  \
