@@ -116,6 +116,15 @@ template <class SceneT, Scalar S>
                 continue;
             }
         }
+        // What a shadow ray towards `incident` lets through: 1 unblocked, black blocked, and,
+        // with filtered shadows (rt), the colour of the transparent surfaces it passes.
+        const auto shadow_filter = [&](const auto& incident) -> Rgb<S> {
+            ++ctx.rays.shadow;
+            const Ray<S> shadow{shadow_origin, incident.direction,
+                                shadow_ray_length(shadow_origin, incident.direction, incident.distance)};
+            if (!(culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow))) return Rgb<S>(S(1));
+            return options.filtered_shadows ? filtered_shadow(scene, shadow) : Rgb<S>(S(0));
+        };
         // POV-Ray's adaptive area light: its grid refined where the shadow changes.
         const auto* area = std::get_if<AreaLight<S>>(&light);
         if (options.adaptive_area_lights && area && area->adaptive && shadows && columns == area->size1 &&
@@ -128,15 +137,8 @@ template <class SceneT, Scalar S>
                     GridSample<S> g;
                     const auto incident = sampler.sample(u);
                     if (!incident) return g;
-                    ++ctx.rays.shadow;
-                    const Ray<S> shadow{shadow_origin, incident->direction,
-                                        shadow_ray_length(shadow_origin, incident->direction, incident->distance)};
-                    Rgb<S> filter(S(1));
-                    if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) {
-                        if (!options.filtered_shadows) return g;
-                        filter = filtered_shadow(scene, shadow);
-                        if (is_black(filter)) return g;
-                    }
+                    const Rgb<S> filter = shadow_filter(*incident);
+                    if (is_black(filter)) return g;
                     g.shadow = filter * shadow_ray_media(scene, light, shadow_origin, incident->direction, incident->distance, ctx.rng);
                     const S cos_theta = glm::dot(n, incident->direction);
                     if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, incident->direction) > S(0))) return g;
@@ -156,20 +158,9 @@ template <class SceneT, Scalar S>
             if (!incident) return Rgb<S>(S(0));
             const S cos_theta = glm::dot(n, incident->direction);
             if (!(cos_theta > S(0)) || !(glm::dot(geometric_n, incident->direction) > S(0))) return Rgb<S>(S(0));
-            Rgb<S> filter(S(1));
-            seen = ShadowSeen::all;
-            if (shadows) {
-                ++ctx.rays.shadow;
-                const Ray<S> shadow{shadow_origin, incident->direction,
-                                    shadow_ray_length(shadow_origin, incident->direction, incident->distance)};
-                if (culled ? scene.occluded_by(ctx.occluders, shadow) : scene.occluded(shadow)) {
-                    seen = ShadowSeen::none;
-                    if (!options.filtered_shadows) return Rgb<S>(S(0));
-                    filter = filtered_shadow(scene, shadow);
-                    if (is_black(filter)) return Rgb<S>(S(0));
-                    seen = ShadowSeen::part;
-                }
-            }
+            const Rgb<S> filter = shadows ? shadow_filter(*incident) : Rgb<S>(S(1));
+            if (is_black(filter)) return Rgb<S>(S(0));
+            seen = filter == Rgb<S>(S(1)) ? ShadowSeen::all : ShadowSeen::part;
             Rgb<S> f = brdf * diffuse_cosine(material, cos_theta);
             if (highlights && shadows) f += highlight_weight * highlight(material, surface_color, n, wo, incident->direction);
             return f * incident->irradiance * filter *
