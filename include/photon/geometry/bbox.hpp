@@ -56,4 +56,15 @@ template <Scalar S> struct BBox {
     }
 };
 
+/// x in S, rounded towards -infinity (down) or +infinity (up): the corners of a box computed in
+/// double, so that it never shrinks when stored in S.
+template <Scalar S> [[nodiscard]] S rounded_down(double x) noexcept {
+    const S y = S(x);
+    return double(y) > x ? std::nextafter(y, -std::numeric_limits<S>::infinity()) : y;
+}
+template <Scalar S> [[nodiscard]] S rounded_up(double x) noexcept {
+    const S y = S(x);
+    return double(y) < x ? std::nextafter(y, std::numeric_limits<S>::infinity()) : y;
+}
+
 }  // namespace photon

@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -29,15 +28,6 @@ struct HalfSpace {
 
 inline constexpr std::size_t max_half_spaces = 48;
 
-/// x in S, rounded towards -infinity (down) or +infinity (up), so that a box never shrinks.
-template <Scalar S> [[nodiscard]] S rounded_down(double x) noexcept {
-    const S y = S(x);
-    return double(y) > x ? std::nextafter(y, -std::numeric_limits<S>::infinity()) : y;
-}
-template <Scalar S> [[nodiscard]] S rounded_up(double x) noexcept {
-    const S y = S(x);
-    return double(y) < x ? std::nextafter(y, std::numeric_limits<S>::infinity()) : y;
-}
 
 /// The bounds of the intersection of `spaces`, infinite on the axes where it is unbounded (or
 /// wider than `reach` from the origin); an empty box when the intersection is empty.

@@ -231,11 +231,10 @@ private:
             lo[i] = c - reach - pad;
             hi[i] = c + reach + pad;
         }
-        bounds_ = BBox<S>{Vec3<S>(lo), Vec3<S>(hi)};
         // Rounded outward to S, so that the box still holds the solid.
         for (int i = 0; i < 3; ++i) {
-            if (double(bounds_.min[i]) > lo[i]) bounds_.min[i] = std::nextafter(bounds_.min[i], -std::numeric_limits<S>::infinity());
-            if (double(bounds_.max[i]) < hi[i]) bounds_.max[i] = std::nextafter(bounds_.max[i], std::numeric_limits<S>::infinity());
+            bounds_.min[i] = rounded_down<S>(lo[i]);
+            bounds_.max[i] = rounded_up<S>(hi[i]);
         }
         bounded_ = bounds_.is_finite();
         if (bounded_) {
